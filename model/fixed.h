@@ -1,0 +1,130 @@
+/*
+ * fixed.h - Strand's fixed-point arithmetic: the one definition the RTL mirrors.
+ *
+ * Numbers are signed two's complement, W bits in all, F of them fraction
+ * ("Q(W-F).F"), held sign-extended in an int32_t (W <= 32). Every operation here
+ * is written the way the hardware computes it: integer operations of stated
+ * width, no floating point. rtl/fx_*.v implement the same functions bit for bit
+ * and tb/ checks them against this file.
+ *
+ * Rules (docs/model.md explains them at length):
+ *  - Saturation: any result outside [-2^(W-1), 2^(W-1)-1] is clamped, never wrapped.
+ *  - Rounding: a value shifted right by n bits is rounded to nearest, ties to even
+ *    ("convergent" rounding). It is unbiased, so a resting rope does not creep.
+ *  - Square root: radicand is an unsigned 2W-bit integer (a sum of squares of
+ *    W-bit values, so in Q(2F)); the root is a non-negative W-bit value in Q.F.
+ *    It resolves SQRT_BITS magnitude bits, most significant (bit W-2) first, one
+ *    per iteration, then one more iteration decides rounding to nearest at the
+ *    last resolved bit. Roots >= 2^(W-1) saturate to 2^(W-1)-1.
+ *  - Divide: quotient round(num * 2^F / den) of two non-negative values, DIV_BITS
+ *    magnitude bits from bit W-2 down plus one rounding iteration, saturating at
+ *    2^(W-1)-1. Division by zero is flagged; callers skip the correction.
+ */
+#ifndef STRAND_FIXED_H
+#define STRAND_FIXED_H
+
+#include <stdbool.h>
+#include <stdint.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* Limits the model and the RTL both accept. */
+#define FX_MIN_WIDTH 8
+#define FX_MAX_WIDTH 32
+
+typedef int32_t fx_t;
+
+/* A number format: width, fraction bits, and how many bits the iterative units resolve. */
+typedef struct {
+    int width;     /* W: total bits, FX_MIN_WIDTH..FX_MAX_WIDTH */
+    int frac;      /* F: fraction bits, 1..W-2 */
+    int sqrt_bits; /* root magnitude bits resolved, 1..W-1 (W-1 = full precision) */
+    int div_bits;  /* quotient magnitude bits resolved, 1..W-1 (W-1 = full precision) */
+} fx_format;
+
+/* NULL if the format is valid, else a static message saying what is wrong. */
+const char *fx_format_check(const fx_format *fmt);
+
+static inline fx_t fx_max(const fx_format *fmt) { return (fx_t)((INT64_C(1) << (fmt->width - 1)) - 1); }
+static inline fx_t fx_min(const fx_format *fmt) { return (fx_t)(-(INT64_C(1) << (fmt->width - 1))); }
+static inline fx_t fx_one(const fx_format *fmt) { return (fx_t)(INT64_C(1) << fmt->frac); }
+
+/* Clamp a wide intermediate to the W-bit range. */
+static inline fx_t fx_sat(const fx_format *fmt, int64_t v)
+{
+    if (v > fx_max(fmt)) return fx_max(fmt);
+    if (v < fx_min(fmt)) return fx_min(fmt);
+    return (fx_t)v;
+}
+
+/* floor(v / 2^n) for any sign: C's >> on negative values is implementation-defined. */
+static inline int64_t fx_asr(int64_t v, int n)
+{
+    return v >= 0 ? v >> n : -((-(v + 1)) >> n) - 1;
+}
+
+/* v / 2^n rounded to nearest, ties to even (n >= 1). Unsaturated. */
+static inline int64_t fx_round_shift(int64_t v, int n)
+{
+    int64_t q = fx_asr(v, n);
+    int64_t r = v - q * (INT64_C(1) << n); /* 0 <= r < 2^n */
+    int64_t half = INT64_C(1) << (n - 1);
+    if (r > half || (r == half && (q & 1))) q++;
+    return q;
+}
+
+static inline fx_t fx_add(const fx_format *fmt, fx_t a, fx_t b) { return fx_sat(fmt, (int64_t)a + b); }
+static inline fx_t fx_sub(const fx_format *fmt, fx_t a, fx_t b) { return fx_sat(fmt, (int64_t)a - b); }
+static inline fx_t fx_neg(const fx_format *fmt, fx_t a) { return fx_sat(fmt, -(int64_t)a); }
+
+/* a * b: the exact 2W-bit product, rounded (ties to even) back to Q.F, saturated. */
+static inline fx_t fx_mul(const fx_format *fmt, fx_t a, fx_t b)
+{
+    return fx_sat(fmt, fx_round_shift((int64_t)a * b, fmt->frac));
+}
+
+/* (a + b) / 2 rounded ties to even, from the exact (W+1)-bit sum. Never overflows. */
+static inline fx_t fx_avg(const fx_format *fmt, fx_t a, fx_t b)
+{
+    return fx_sat(fmt, fx_round_shift((int64_t)a + b, 1));
+}
+
+/* a / 2 rounded ties to even. */
+static inline fx_t fx_half(const fx_format *fmt, fx_t a) { return fx_sat(fmt, fx_round_shift(a, 1)); }
+
+/* Exact sum of squares: the 2W-bit radicand of a length (3 * 2^(2W-2) < 2^(2W)). */
+static inline uint64_t fx_sumsq(fx_t dx, fx_t dy, fx_t dz)
+{
+    return (uint64_t)((int64_t)dx * dx) + (uint64_t)((int64_t)dy * dy) + (uint64_t)((int64_t)dz * dz);
+}
+
+/* Square root, see the header comment. Returns a value in 0..fx_max. */
+fx_t fx_sqrt(const fx_format *fmt, uint64_t radicand);
+
+/*
+ * Unsigned divide: round(num * 2^F / den) for num, den < 2^W, in 0..fx_max.
+ * den == 0 sets *div_by_zero (if given) and returns fx_max; callers skip the result.
+ */
+fx_t fx_div(const fx_format *fmt, uint32_t num, uint32_t den, bool *div_by_zero);
+
+/* Signed numerator, positive denominator: sign and magnitude around fx_div. */
+fx_t fx_div_signed(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero);
+
+/* Conversions for scene constants and reports (not used inside the datapath). */
+fx_t fx_from_double(const fx_format *fmt, double v);
+double fx_to_double(const fx_format *fmt, fx_t v);
+
+/* Does a double fit the format without saturating? */
+bool fx_fits(const fx_format *fmt, double v);
+
+/* Cycles the iterative units take per result: one per resolved bit plus the rounding step. */
+static inline int fx_sqrt_iterations(const fx_format *fmt) { return fmt->sqrt_bits + 1; }
+static inline int fx_div_iterations(const fx_format *fmt) { return fmt->div_bits + 1; }
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
