@@ -1,0 +1,93 @@
+# Strand: every flow. 'make help' lists the targets.
+#
+# Generated files go to $(BUILD). Targets that need tools call scripts/bootstrap.sh
+# first, which installs what is missing (Debian packages, .venv) and nothing else.
+
+BUILD    ?= build
+CC       ?= cc
+PYTHON   := .venv/bin/python3
+JOBS     ?= 2
+
+WARN     := -Wall -Wextra -Werror
+CSTD     := -std=c11
+COPT     := -O2 -g
+DEP_CFLAGS = $(shell pkg-config --cflags inih cairo 2>/dev/null)
+DEP_LIBS   = $(shell pkg-config --libs inih cairo 2>/dev/null)
+MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel $(DEP_CFLAGS)
+
+MODEL_SRC := model/fixed.c model/scene.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c
+MODEL_HDR := $(wildcard model/*.h)
+MODEL_OBJ := $(MODEL_SRC:model/%.c=$(BUILD)/model/%.o)
+MODEL_LIB := $(BUILD)/libstrand.a
+STRAND    := $(BUILD)/strand
+
+SCENES    := $(wildcard sim/scenes/*.scene)
+
+.PHONY: help bootstrap model test test-model test-scenes lint lint-c clean
+.DEFAULT_GOAL := help
+
+help:
+	@echo "Strand make targets:"
+	@echo "  make test        install what is missing, then run every test (ends with 'N passed, N failed')"
+	@echo "  make model       build the C model library and the CLI, $(STRAND)"
+	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
+	@echo "  make bootstrap   install the Debian packages and the Python environment"
+	@echo "  make clean       remove $(BUILD)/"
+
+bootstrap:
+	@scripts/bootstrap.sh
+
+# ---- the C model ----
+
+$(BUILD)/model/%.o: model/%.c $(MODEL_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(MODEL_CFLAGS) -c $< -o $@
+
+$(MODEL_LIB): $(MODEL_OBJ)
+	@rm -f $@
+	ar rcs $@ $^
+
+$(STRAND): model/strand.c $(MODEL_LIB)
+	$(CC) $(MODEL_CFLAGS) $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
+
+model: $(STRAND)
+
+# ---- C unit tests (cmocka) ----
+
+MODEL_TESTS := $(patsubst model/tests/%.c,$(BUILD)/tests/%,$(wildcard model/tests/test_*.c))
+
+$(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
+	@mkdir -p $(dir $@)
+	$(CC) $(MODEL_CFLAGS) -D_POSIX_C_SOURCE=200809L -DSTRAND_ROOT='"$(CURDIR)"' -DSTRAND_BIN='"$(CURDIR)/$(STRAND)"' \
+	  $< $(MODEL_LIB) $(DEP_LIBS) -lcmocka -lm -o $@
+
+test-model: $(MODEL_TESTS) $(STRAND)
+	@for t in $(MODEL_TESTS); do $$t || exit 1; done
+
+# Every shipped scene runs in both formats.
+test-scenes: $(STRAND)
+	@for s in $(SCENES); do for f in fixed double; do \
+	  if $(STRAND) run $$s --format $$f --frames 50 > $(BUILD)/scene-run.log 2>&1; \
+	  then echo "PASS run $$s --format $$f"; else echo "FAIL run $$s --format $$f"; cat $(BUILD)/scene-run.log; fi; \
+	done; done
+
+# ---- lint ----
+
+lint-c:
+	@mkdir -p $(BUILD)/lint
+	@for f in $(MODEL_SRC); do $(CC) -std=c11 -pedantic $(WARN) -Imodel $(DEP_CFLAGS) -fsyntax-only $$f || exit 1; done
+	@echo "lint-c: clean (-std=c11 -pedantic -Wall -Wextra -Werror)"
+
+lint: lint-c $(if $(wildcard tb/units.mk),lint-units)
+
+# ---- everything ----
+
+TEST_STEPS := test-model test-scenes $(if $(wildcard tb/units.mk),test-units)
+
+test: bootstrap
+	@scripts/run_tests.sh $(TEST_STEPS)
+
+clean:
+	rm -rf $(BUILD)
+
+-include tb/units.mk

@@ -1,0 +1,336 @@
+/*
+ * engine_body.h - the frame engine, written once for two number types.
+ *
+ * Included by engine_fixed.c and engine_double.c, which define:
+ *   SIM, P(name)           the state type and the function prefix
+ *   NUM                    the number type
+ *   ADD SUB MUL AVG HALF   arithmetic (fixed: saturating, rounded ties-to-even)
+ *   ABS                    magnitude
+ *   LEN(d)                 length of a 3-vector (fixed: fx_sqrt of the exact sum of squares)
+ *   DIV(a, b, dz)          a / b for a, b >= 0; *dz set when b == 0
+ *   SDIV(a, b, dz)         a / b for a signed, b >= 0
+ *   FROM(x)                a scene constant in this number type
+ *   LESS(a, b)             a < b
+ *
+ * Order of operations is part of the contract with the RTL: each line below that
+ * combines two numbers is one saturating operation in hardware.
+ *
+ * A substep (Verlet): spring force pass, Verlet (+ mouse) pass over all nodes,
+ * `iterations` constraint passes, ground pass. A frame samples the mouse first.
+ */
+
+static bool P(node_pinned)(const SIM *s, int i) { return s->sc->pinned[i]; }
+
+bool P(node_fixed)(const SIM *s, int i) { return s->sc->pinned[i] || s->grabbed == i; }
+
+bool P(init)(SIM *s, const scene *sc, const fx_format *fmt)
+{
+    double h = scene_h(sc);
+    memset(s, 0, sizeof *s);
+    s->sc = sc;
+    if (fmt) s->fmt = *fmt;
+    s->n = sc->n_nodes;
+    s->dim = sc->dim;
+    s->grabbed = -1;
+    s->pos = calloc((size_t)s->n, sizeof *s->pos);
+    s->prev = calloc((size_t)s->n, sizeof *s->prev);
+    s->acc = calloc((size_t)s->n, sizeof *s->acc);
+    s->vel = calloc((size_t)s->n, sizeof *s->vel);
+    s->rest = calloc((size_t)(sc->n_edges ? sc->n_edges : 1), sizeof *s->rest);
+    if (!s->pos || !s->prev || !s->acc || !s->vel || !s->rest) return false;
+
+    /* Reset. A chain is laid out as the hardware does it, start + step, step, ...;
+       the previous positions keep the scene's offsets from the positions. */
+    for (int i = 0; i < s->n; i++)
+        for (int k = 0; k < 3; k++) {
+            if (sc->body == BODY_CHAIN)
+                s->pos[i][k] = i == 0 ? FROM(sc->chain_start[k]) : ADD(s->pos[i - 1][k], FROM(sc->chain_step[k]));
+            else
+                s->pos[i][k] = FROM(sc->pos[i][k]);
+            s->prev[i][k] = ADD(s->pos[i][k], FROM(sc->prev[i][k] - sc->pos[i][k]));
+            /* Euler keeps velocity explicitly: the same initial motion */
+            s->vel[i][k] = FROM((sc->pos[i][k] - sc->prev[i][k]) / h);
+        }
+    for (int e = 0; e < sc->n_edges; e++) s->rest[e] = FROM(sc->edges[e].rest);
+    s->dist = FROM(sc->chain_rest);
+    for (int k = 0; k < 3; k++) {
+        s->gravity[k] = sc->en_gravity ? FROM(sc->integrator == INTEGRATOR_EULER ? sc->gravity[k] : sc->gravity[k] * h * h) : FROM(0);
+        s->box[k] = FROM(sc->mouse_box[k]);
+    }
+    s->damping = FROM(sc->damping);
+    s->impulse = FROM(sc->mouse_impulse);
+    /* Springs: Verlet adds F h^2 / m to the position; velocity is x - x- (per substep). */
+    if (sc->integrator == INTEGRATOR_VERLET) {
+        s->ks = FROM(sc->ks * h * h / sc->mass);
+        s->kd = FROM(sc->kd_per_step ? sc->kd * h * h / sc->mass : sc->kd * h / sc->mass);
+    } else {
+        s->ks = FROM(sc->ks / sc->mass);
+        s->kd = FROM(sc->kd_per_step ? sc->kd * h / sc->mass : sc->kd / sc->mass);
+    }
+    s->friction = FROM(1.0 - sc->ground_friction);
+    s->ground = FROM(sc->ground_level + sc->ground_sign * sc->ground_radius);
+    s->h = FROM(h);
+    return true;
+}
+
+void P(free)(SIM *s)
+{
+    free(s->pos);
+    free(s->prev);
+    free(s->acc);
+    free(s->vel);
+    free(s->rest);
+    s->pos = s->prev = s->acc = s->vel = NULL;
+    s->rest = NULL;
+}
+
+/* Is the pointer within the in-touch box of node i? (|mouse - node| < box on each axis) */
+static bool P(in_touch)(const SIM *s, int i)
+{
+    for (int k = 0; k < s->dim; k++)
+        if (!LESS(ABS(SUB(s->mouse[k], s->pos[i][k])), s->box[k])) return false;
+    return true;
+}
+
+void P(begin_frame)(SIM *s)
+{
+    const scene *sc = s->sc;
+    double m[3];
+    bool down;
+    if (!sc->en_mouse) return;
+    scene_mouse_at(sc, s->frame, m, &down);
+    for (int k = 0; k < 3; k++) s->mouse[k] = FROM(m[k]);
+    s->mouse_down = down;
+    if (sc->mouse != MOUSE_GRAB) return;
+    if (!down) {
+        s->grabbed = -1;
+        return;
+    }
+    if (s->grabbed >= 0) return;
+    /* Button pressed: take the nearest free node inside the box (L1 distance, lowest index on ties). */
+    NUM best = FROM(0);
+    for (int i = 0; i < s->n; i++) {
+        if (P(node_pinned)(s, i) || !P(in_touch)(s, i)) continue;
+        NUM d = ABS(SUB(s->mouse[0], s->pos[i][0]));
+        for (int k = 1; k < s->dim; k++) d = ADD(d, ABS(SUB(s->mouse[k], s->pos[i][k])));
+        if (s->grabbed < 0 || LESS(d, best)) {
+            s->grabbed = i;
+            best = d;
+        }
+    }
+}
+
+/*
+ * Damped spring (references 001, 004): F = ks (l - l0) u + kd ((v_b - v_a) . u) u on a,
+ * -F on b, u the unit vector from a to b. ks and kd are pre-scaled (init) so that F is
+ * the position change per substep (Verlet) or the acceleration (Euler).
+ */
+void P(spring_edge)(SIM *s, int e)
+{
+    const scene_edge *ed = &s->sc->edges[e];
+    NUM d[3] = {FROM(0), FROM(0), FROM(0)}, u[3] = {FROM(0), FROM(0), FROM(0)};
+    NUM len, stretch, vn = FROM(0), f;
+    bool zero;
+    int a = ed->a, b = ed->b;
+    for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[b][k], s->pos[a][k]);
+    len = LEN(d);
+    if (!LESS(FROM(0), len)) {
+        s->skipped++; /* coincident ends: no direction, no force */
+        return;
+    }
+    for (int k = 0; k < s->dim; k++) {
+        NUM va, vb;
+        u[k] = SDIV(d[k], len, &zero);
+        if (s->sc->integrator == INTEGRATOR_VERLET) {
+            va = SUB(s->pos[a][k], s->prev[a][k]);
+            vb = SUB(s->pos[b][k], s->prev[b][k]);
+        } else {
+            va = s->vel[a][k];
+            vb = s->vel[b][k];
+        }
+        vn = ADD(vn, MUL(SUB(vb, va), u[k]));
+    }
+    stretch = SUB(len, s->rest[e]);
+    f = ADD(MUL(s->ks, stretch), MUL(s->kd, vn));
+    for (int k = 0; k < s->dim; k++) {
+        NUM fk = MUL(f, u[k]);
+        s->acc[a][k] = ADD(s->acc[a][k], fk);
+        s->acc[b][k] = SUB(s->acc[b][k], fk);
+    }
+}
+
+/* Verlet (reference 000, damping of reference 002): v = x - x-; v -= d v; x- = x; x += v + g h^2 + F. */
+void P(verlet_node)(SIM *s, int i)
+{
+    const scene *sc = s->sc;
+    if (P(node_pinned)(s, i)) return;
+    if (s->grabbed == i) { /* follows the pointer; releasing it keeps the pointer's last motion */
+        for (int k = 0; k < s->dim; k++) {
+            s->prev[i][k] = s->pos[i][k];
+            s->pos[i][k] = s->mouse[k];
+        }
+        return;
+    }
+    for (int k = 0; k < s->dim; k++) {
+        NUM v = SUB(s->pos[i][k], s->prev[i][k]);
+        NUM x;
+        if (sc->damping > 0) v = SUB(v, MUL(v, s->damping));
+        s->prev[i][k] = s->pos[i][k];
+        x = ADD(s->pos[i][k], v);
+        if (sc->en_gravity) x = ADD(x, s->gravity[k]);
+        if (sc->en_springs) x = ADD(x, s->acc[i][k]);
+        s->pos[i][k] = x;
+    }
+}
+
+/* Mouse impulse (reference 000): in touch, x- <- x + a if mouse.x < x- else x - a. */
+void P(mouse_node)(SIM *s, int i)
+{
+    if (P(node_pinned)(s, i) || !s->mouse_down || !P(in_touch)(s, i)) return;
+    s->prev[i][0] = LESS(s->mouse[0], s->prev[i][0]) ? ADD(s->pos[i][0], s->impulse) : SUB(s->pos[i][0], s->impulse);
+}
+
+/* The point at distance `dist` from node `from`, toward node c. False for a zero length. */
+static bool P(toward)(SIM *s, int from, int c, NUM out[3])
+{
+    NUM d[3] = {FROM(0), FROM(0), FROM(0)};
+    NUM ratio;
+    bool zero;
+    for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[c][k], s->pos[from][k]);
+    ratio = DIV(s->dist, LEN(d), &zero);
+    if (zero) {
+        s->skipped++;
+        return false;
+    }
+    for (int k = 0; k < s->dim; k++) out[k] = ADD(s->pos[from][k], MUL(d[k], ratio));
+    return true;
+}
+
+/*
+ * Centred rule (reference 000): C moves to the mean of the point at `dist` from U and
+ * the point at `dist` from D. At a rope end, or where one length is zero, the one
+ * remaining point is used; with none, C stays.
+ */
+void P(centred_node)(SIM *s, int i)
+{
+    NUM up[3], down[3];
+    bool has_up, has_down;
+    if (P(node_fixed)(s, i)) return;
+    has_up = i > 0 && P(toward)(s, i - 1, i, up);
+    has_down = i + 1 < s->n && P(toward)(s, i + 1, i, down);
+    for (int k = 0; k < s->dim; k++) {
+        if (has_up && has_down)
+            s->pos[i][k] = AVG(up[k], down[k]);
+        else if (has_up)
+            s->pos[i][k] = up[k];
+        else if (has_down)
+            s->pos[i][k] = down[k];
+    }
+}
+
+/*
+ * Pairwise rule (references 001 struts, 002): the excess e = d - d * rest/|d| along
+ * d = b - a is shared, a += e/2 and b -= e/2 (so the midpoint stays exactly), or taken
+ * whole by the free end when the other is fixed.
+ */
+void P(pair_edge)(SIM *s, int e)
+{
+    const scene_edge *ed = &s->sc->edges[e];
+    int a = ed->a, b = ed->b;
+    bool fa = P(node_fixed)(s, a), fb = P(node_fixed)(s, b), zero;
+    NUM d[3] = {FROM(0), FROM(0), FROM(0)};
+    NUM ratio;
+    if (fa && fb) return;
+    for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[b][k], s->pos[a][k]);
+    ratio = DIV(s->rest[e], LEN(d), &zero);
+    if (zero) {
+        s->skipped++;
+        return;
+    }
+    for (int k = 0; k < s->dim; k++) {
+        NUM excess = SUB(d[k], MUL(d[k], ratio));
+        if (!fa && !fb) {
+            NUM half = HALF(excess);
+            s->pos[a][k] = ADD(s->pos[a][k], half);
+            s->pos[b][k] = SUB(s->pos[b][k], half);
+        } else if (fa) {
+            s->pos[b][k] = SUB(s->pos[b][k], excess);
+        } else {
+            s->pos[a][k] = ADD(s->pos[a][k], excess);
+        }
+    }
+}
+
+/*
+ * Ground (reference 001): below the boundary, the node is put on it and its velocity
+ * along the normal is reversed (x- = boundary + v); friction pulls the other axes'
+ * previous positions toward the current ones by (1 - u).
+ */
+void P(ground_node)(SIM *s, int i)
+{
+    const scene *sc = s->sc;
+    int ax = sc->ground_axis;
+    NUM z = s->pos[i][ax];
+    bool below = sc->ground_sign > 0 ? LESS(z, s->ground) : LESS(s->ground, z);
+    if (P(node_fixed)(s, i) || !below) return;
+    s->prev[i][ax] = ADD(s->ground, SUB(z, s->prev[i][ax]));
+    s->pos[i][ax] = s->ground;
+    for (int k = 0; k < s->dim; k++)
+        if (k != ax) s->prev[i][k] = ADD(s->prev[i][k], MUL(SUB(s->pos[i][k], s->prev[i][k]), s->friction));
+}
+
+static void P(force_pass)(SIM *s)
+{
+    for (int i = 0; i < s->n; i++)
+        for (int k = 0; k < 3; k++) s->acc[i][k] = FROM(0);
+    for (int e = 0; e < s->sc->n_edges; e++)
+        if (s->sc->edges[e].kind == EDGE_SPRING) P(spring_edge)(s, e);
+}
+
+/* Explicit Euler (reference 002, C model only): x += v h; v += a h, with a from the old state. */
+static void P(euler_substep)(SIM *s)
+{
+    const scene *sc = s->sc;
+    if (sc->en_springs) P(force_pass)(s);
+    for (int i = 0; i < s->n; i++) {
+        if (P(node_pinned)(s, i)) continue;
+        for (int k = 0; k < s->dim; k++) {
+            NUM a = s->acc[i][k];
+            if (sc->en_gravity) a = ADD(a, s->gravity[k]);
+            s->prev[i][k] = s->pos[i][k];
+            s->pos[i][k] = ADD(s->pos[i][k], MUL(s->vel[i][k], s->h));
+            s->vel[i][k] = ADD(s->vel[i][k], MUL(a, s->h));
+        }
+    }
+}
+
+void P(substep)(SIM *s)
+{
+    const scene *sc = s->sc;
+    if (sc->integrator == INTEGRATOR_EULER) {
+        P(euler_substep)(s);
+        return;
+    }
+    if (sc->en_springs) P(force_pass)(s);
+    for (int i = 0; i < s->n; i++) {
+        P(verlet_node)(s, i);
+        if (sc->en_mouse && sc->mouse == MOUSE_IMPULSE) P(mouse_node)(s, i);
+    }
+    if (sc->en_constraints)
+        for (int it = 0; it < sc->iterations; it++) {
+            if (sc->rule == RULE_CENTRED)
+                for (int i = 0; i < s->n; i++) P(centred_node)(s, i);
+            else
+                for (int e = 0; e < sc->n_edges; e++)
+                    if (sc->edges[e].kind != EDGE_SPRING) P(pair_edge)(s, e);
+        }
+    if (sc->en_ground)
+        for (int i = 0; i < s->n; i++) P(ground_node)(s, i);
+}
+
+void P(frame)(SIM *s)
+{
+    P(begin_frame)(s);
+    for (int i = 0; i < s->sc->substeps; i++) P(substep)(s);
+    s->frame++;
+}

@@ -1,0 +1,24 @@
+/* engine_fixed.c - the frame engine in Strand's fixed-point arithmetic (bit-exact with the RTL). */
+#include <stdlib.h>
+#include <string.h>
+
+#include "fixed.h"
+#include "sim.h"
+
+#define SIM sim_fx
+#define P(name) sim_fx_##name
+#define NUM fx_t
+#define F_ (&s->fmt)
+#define ADD(a, b) fx_add(F_, (a), (b))
+#define SUB(a, b) fx_sub(F_, (a), (b))
+#define MUL(a, b) fx_mul(F_, (a), (b))
+#define AVG(a, b) fx_avg(F_, (a), (b))
+#define HALF(a) fx_half(F_, (a))
+#define ABS(a) ((a) < 0 ? fx_neg(F_, (a)) : (a))
+#define LEN(d) fx_sqrt(F_, fx_sumsq((d)[0], (d)[1], (d)[2]))
+#define DIV(a, b, dz) fx_div(F_, (uint32_t)(a), (uint32_t)(b), (dz))
+#define SDIV(a, b, dz) fx_div_signed(F_, (a), (b), (dz))
+#define FROM(x) fx_from_double(F_, (x))
+#define LESS(a, b) ((a) < (b))
+
+#include "engine_body.h"

@@ -1,0 +1,25 @@
+/* render.h - pictures of a body: one PNG per frame, drawn with cairo. */
+#ifndef STRAND_RENDER_H
+#define STRAND_RENDER_H
+
+#include "scene.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+typedef struct {
+    double xmin, ymin, xmax, ymax; /* projected bounds */
+    int width, height;             /* pixels */
+} render_view;
+
+/* Fit the view to the whole run (a double-precision pre-pass over `frames` frames). */
+bool render_view_fit(render_view *v, const scene *sc, int frames);
+/* Draw the body at one frame and write it as a PNG. False (with errno-style message on stderr) on failure. */
+bool render_png(const scene *sc, const render_view *v, double (*pos)[3], int frame, const char *path);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,115 @@
+/*
+ * scene.h - a scene: what to simulate and with which effects (design.md section 3).
+ *
+ * Scenes are INI files parsed by libinih and validated completely before anything
+ * runs; sim/scenes/README.md documents every key. Values are kept in double, as
+ * written; each number format converts them (engine.c) and checks they fit.
+ */
+#ifndef STRAND_SCENE_H
+#define STRAND_SCENE_H
+
+#include <stdbool.h>
+#include <stdio.h>
+
+#include "fixed.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define SCENE_MAX_NODES 65536
+#define SCENE_MAX_EDGES 262144
+#define SCENE_MAX_EVENTS 65536
+#define SCENE_MAX_FRAMES 100000000
+#define SCENE_MAX_SUBSTEPS 4096
+#define SCENE_MAX_ITERATIONS 4096
+#define SCENE_ERR_LEN 512
+
+typedef enum { BODY_CHAIN, BODY_GRAPH } body_kind;
+typedef enum { EDGE_ROD, EDGE_STRUT, EDGE_SPRING } edge_kind;
+typedef enum { RULE_CENTRED, RULE_PAIRWISE } constraint_rule;
+typedef enum { INTEGRATOR_VERLET, INTEGRATOR_EULER } integrator_kind;
+typedef enum { MOUSE_IMPULSE, MOUSE_GRAB } mouse_mode;
+typedef enum { NUMBER_FIXED, NUMBER_DOUBLE } number_kind;
+
+typedef struct {
+    int a, b;       /* node indices */
+    edge_kind kind; /* rods and struts are distance constraints, springs are forces */
+    double rest;    /* rest length */
+} scene_edge;
+
+typedef struct {
+    int frame;      /* from this frame on (the mouse is sampled at each frame's start) */
+    double pos[3];
+    bool down;
+} mouse_event;
+
+typedef struct {
+    char path[256];
+    char name[64];
+    int dim; /* 2 or 3 */
+    bool y_down; /* pictures: y grows downward (screen coordinates, reference 000) */
+
+    /* number format */
+    number_kind number;
+    fx_format fmt; /* used when number == NUMBER_FIXED (and by --format fixed) */
+
+    /* time */
+    double dt;  /* frame time */
+    int frames; /* default run length */
+    int substeps;
+    int iterations; /* constraint iterations per substep */
+    integrator_kind integrator;
+    double damping; /* Verlet: x+ = x + (1-d)(x - x-) + a dt^2 */
+
+    /* body */
+    body_kind body;
+    int units, nodes_per_unit, n_nodes;
+    double (*pos)[3];  /* initial positions */
+    double (*prev)[3]; /* initial previous positions */
+    bool *pinned;
+    double mass;
+    int n_edges;
+    scene_edge *edges; /* chains get their neighbour edges here too */
+    double chain_start[3], chain_step[3], chain_rest;
+
+    /* effects: each off unless the scene names its section */
+    bool en_gravity, en_mouse, en_constraints, en_springs, en_ground;
+    double gravity[3];
+    mouse_mode mouse;
+    double mouse_box[3];
+    double mouse_impulse;
+    int n_events;
+    mouse_event *events;
+    constraint_rule rule;
+    double ks, kd;
+    bool kd_per_step; /* damper acts on per-step velocity x - x- (reference 001) */
+    int ground_axis;  /* 0, 1, 2 */
+    int ground_sign;  /* +1: nodes stay at coordinate >= level + radius; -1: <= level - radius */
+    double ground_level, ground_radius, ground_friction;
+} scene;
+
+/*
+ * Parse and validate a scene file. On failure returns false and writes
+ * "file:line: message" into err (SCENE_ERR_LEN bytes). The scene is freed on failure.
+ */
+bool scene_load(scene *sc, const char *path, char *err);
+void scene_free(scene *sc);
+
+/* Substep length dt / substeps. */
+static inline double scene_h(const scene *sc) { return sc->dt / sc->substeps; }
+
+/* Nodes in the chain order/edge counts used by the stats. */
+const char *scene_effects_string(const scene *sc, char *buf, size_t len);
+
+/* Does every scene value fit the format? Returns NULL or a message naming the value. */
+const char *scene_check_format(const scene *sc, const fx_format *fmt, char *buf, size_t len);
+
+/* Mouse state at the start of a frame: the last event with event.frame <= frame. */
+void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

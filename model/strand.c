@@ -1,0 +1,370 @@
+/*
+ * strand.c - the command-line tool: check, run and compare scenes.
+ *
+ * Exit status: 0 success, 1 a run failed (I/O, non-finite values), 2 bad input
+ * (a scene error "file:line: message", or a bad argument). Nothing is written
+ * before every argument and the scene have been checked; files are written to a
+ * temporary name and renamed when complete.
+ */
+#define _POSIX_C_SOURCE 200809L
+#include <errno.h>
+#include <getopt.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "engine.h"
+#include "render.h"
+#include "scene.h"
+
+#define EXIT_BAD_INPUT 2
+
+static const char *usage_main =
+    "usage: strand COMMAND [OPTIONS] SCENE\n"
+    "\n"
+    "Commands:\n"
+    "  check SCENE      validate a scene and print a one-line summary\n"
+    "  run SCENE        run a scene and print frames, stretch, energy and drift\n"
+    "  compare SCENE    run fixed point and double side by side and print the error\n"
+    "\n"
+    "'strand COMMAND --help' describes each command's options.\n";
+
+static const char *usage_check = "usage: strand check SCENE\n"
+                                 "Validate SCENE; print its summary, or 'file:line: message' and exit 2.\n";
+
+static const char *usage_run =
+    "usage: strand run SCENE [--frames N] [--format fixed|double] [--csv FILE] [--hex FILE] [--png DIR]\n"
+    "  --frames N       frames to run (default: the scene's 'frames')\n"
+    "  --format F       fixed (the scene's [format], or Q16.16) or double\n"
+    "  --csv FILE       positions at every frame end: frame,node,x,y[,z]\n"
+    "  --hex FILE       fixed only: raw positions at every frame end, one node per line,\n"
+    "                   x y [z] as W-bit hex words (testbench vectors)\n"
+    "  --png DIR        one picture per frame, DIR/frame_00001.png ...\n";
+
+static const char *usage_compare = "usage: strand compare SCENE [--frames N]\n"
+                                   "Run the scene in fixed point and in double; print the RMS and largest position\n"
+                                   "error (in rest lengths) and the largest stretch of each.\n";
+
+static int bad_arg(const char *cmd, const char *fmt, const char *what)
+{
+    fprintf(stderr, "strand %s: ", cmd);
+    fprintf(stderr, fmt, what);
+    fprintf(stderr, "\n(see 'strand %s --help')\n", cmd);
+    return EXIT_BAD_INPUT;
+}
+
+static bool parse_count(const char *s, int *out)
+{
+    char *end;
+    long v;
+    errno = 0;
+    v = strtol(s, &end, 10);
+    if (end == s || *end || errno || v < 0 || v > SCENE_MAX_FRAMES) return false;
+    *out = (int)v;
+    return true;
+}
+
+typedef struct {
+    int frames;       /* -1: the scene's */
+    int format;       /* -1: the scene's */
+    const char *csv, *hex, *png;
+    bool help;
+} options;
+
+/* Parse options after the command; returns the scene path, or NULL after reporting (status in *rc). */
+static const char *parse_options(const char *cmd, int argc, char **argv, options *o, const char *allowed, int *rc)
+{
+    static const struct option longopts[] = {
+        {"frames", required_argument, 0, 'f'}, {"format", required_argument, 0, 'F'}, {"csv", required_argument, 0, 'c'},
+        {"hex", required_argument, 0, 'x'},    {"png", required_argument, 0, 'p'},    {"help", no_argument, 0, 'h'},
+        {0, 0, 0, 0},
+    };
+    int c;
+    memset(o, 0, sizeof *o);
+    o->frames = o->format = -1;
+    opterr = 0;
+    optind = 1;
+    while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+        if (c == 'h') {
+            o->help = true;
+            *rc = 0;
+            return NULL;
+        }
+        if (c == '?' || !strchr(allowed, c)) {
+            *rc = bad_arg(cmd, "unknown option '%s'", argv[optind - 1]);
+            return NULL;
+        }
+        if (c == ':' ) {
+            *rc = bad_arg(cmd, "option '%s' needs a value", argv[optind - 1]);
+            return NULL;
+        }
+        switch (c) {
+        case 'f':
+            if (!parse_count(optarg, &o->frames)) {
+                *rc = bad_arg(cmd, "--frames: '%s' is not a frame count (0..100000000)", optarg);
+                return NULL;
+            }
+            break;
+        case 'F':
+            if (!strcmp(optarg, "fixed")) o->format = NUMBER_FIXED;
+            else if (!strcmp(optarg, "double")) o->format = NUMBER_DOUBLE;
+            else {
+                *rc = bad_arg(cmd, "--format: '%s' is not 'fixed' or 'double'", optarg);
+                return NULL;
+            }
+            break;
+        case 'c': o->csv = optarg; break;
+        case 'x': o->hex = optarg; break;
+        case 'p': o->png = optarg; break;
+        }
+    }
+    if (optind >= argc) {
+        *rc = bad_arg(cmd, "%s", "no SCENE given");
+        return NULL;
+    }
+    if (optind + 1 < argc) {
+        *rc = bad_arg(cmd, "unexpected argument '%s'", argv[optind + 1]);
+        return NULL;
+    }
+    return argv[optind];
+}
+
+static bool load(const char *path, scene *sc)
+{
+    char err[SCENE_ERR_LEN];
+    if (!scene_load(sc, path, err)) {
+        fprintf(stderr, "%s\n", err);
+        return false;
+    }
+    return true;
+}
+
+static const char *format_name(number_kind kind, const fx_format *fmt, char *buf, size_t len)
+{
+    if (kind == NUMBER_DOUBLE) snprintf(buf, len, "double");
+    else snprintf(buf, len, "Q%d.%d (W=%d, sqrt %d bits, div %d bits)", fmt->width - fmt->frac, fmt->frac, fmt->width, fmt->sqrt_bits, fmt->div_bits);
+    return buf;
+}
+
+static int cmd_check(int argc, char **argv)
+{
+    options o;
+    int rc = 0;
+    scene sc;
+    char fmtbuf[96], effects[160];
+    const char *path = parse_options("check", argc, argv, &o, "", &rc);
+    if (!path) {
+        if (o.help) fputs(usage_check, stdout);
+        return rc;
+    }
+    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    printf("ok %s: %s %dD, %d nodes (%d units x %d), %d edges, %s, %d frames x %d substeps x %d iterations, %s, effects: %s\n", sc.name,
+           sc.body == BODY_CHAIN ? "chain" : "graph", sc.dim, sc.n_nodes, sc.units, sc.nodes_per_unit, sc.n_edges,
+           format_name(sc.number, &sc.fmt, fmtbuf, sizeof fmtbuf), sc.frames, sc.substeps, sc.iterations,
+           sc.integrator == INTEGRATOR_VERLET ? "verlet" : "euler", scene_effects_string(&sc, effects, sizeof effects));
+    scene_free(&sc);
+    return 0;
+}
+
+/* ---- run ---- */
+
+typedef struct {
+    const scene *sc;
+    FILE *csv, *hex;
+    const char *png_dir;
+    render_view view;
+    bool failed;
+} run_out;
+
+static bool run_hook(void *user, const runner *r, int frame, double (*pos)[3])
+{
+    run_out *out = user;
+    const scene *sc = out->sc;
+    if (out->csv)
+        for (int i = 0; i < sc->n_nodes; i++) {
+            fprintf(out->csv, "%d,%d,%.9g,%.9g", frame, i, pos[i][0], pos[i][1]);
+            if (sc->dim == 3) fprintf(out->csv, ",%.9g", pos[i][2]);
+            fputc('\n', out->csv);
+        }
+    if (out->hex) {
+        int digits = (r->fx.fmt.width + 3) / 4;
+        uint32_t mask = r->fx.fmt.width == 32 ? 0xffffffffu : (1u << r->fx.fmt.width) - 1;
+        for (int i = 0; i < sc->n_nodes; i++) {
+            for (int k = 0; k < sc->dim; k++)
+                fprintf(out->hex, "%s%0*x", k ? " " : "", digits, (unsigned)((uint32_t)r->fx.pos[i][k] & mask));
+            fputc('\n', out->hex);
+        }
+    }
+    if (out->png_dir) {
+        char path[1024];
+        snprintf(path, sizeof path, "%s/frame_%05d.png", out->png_dir, frame);
+        if (!render_png(sc, &out->view, pos, frame, path)) {
+            out->failed = true;
+            return false;
+        }
+    }
+    return true;
+}
+
+static FILE *open_temp(const char *path, char *tmp, size_t len)
+{
+    FILE *f;
+    snprintf(tmp, len, "%s.tmp", path);
+    f = fopen(tmp, "w");
+    if (!f) fprintf(stderr, "strand run: cannot write %s: %s\n", tmp, strerror(errno));
+    return f;
+}
+
+static bool close_temp(FILE *f, const char *tmp, const char *path, bool keep)
+{
+    bool ok = f && !ferror(f);
+    if (f && fclose(f) != 0) ok = false;
+    if (ok && keep && rename(tmp, path) == 0) return true;
+    remove(tmp);
+    if (keep) fprintf(stderr, "strand run: cannot write %s\n", path);
+    return false;
+}
+
+static int cmd_run(int argc, char **argv)
+{
+    options o;
+    int rc = 0, frames;
+    scene sc;
+    run_out out;
+    run_stats st;
+    number_kind kind;
+    char csv_tmp[1100], hex_tmp[1100], fmtbuf[96];
+    bool ok;
+    const char *path = parse_options("run", argc, argv, &o, "fFcxp", &rc);
+    if (!path) {
+        if (o.help) fputs(usage_run, stdout);
+        return rc;
+    }
+    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    kind = o.format >= 0 ? (number_kind)o.format : sc.number;
+    frames = o.frames >= 0 ? o.frames : sc.frames;
+    if (kind == NUMBER_FIXED && sc.number == NUMBER_DOUBLE) { /* a double scene run in fixed: check it fits */
+        char buf[160];
+        const char *msg = scene_check_format(&sc, &sc.fmt, buf, sizeof buf);
+        if (msg) {
+            fprintf(stderr, "%s:1: --format fixed: %s\n", sc.path, msg);
+            scene_free(&sc);
+            return EXIT_BAD_INPUT;
+        }
+    }
+    if (o.hex && kind != NUMBER_FIXED) {
+        scene_free(&sc);
+        return bad_arg("run", "%s", "--hex writes raw fixed-point words: it needs --format fixed");
+    }
+
+    memset(&out, 0, sizeof out);
+    out.sc = &sc;
+    if (o.png) {
+        if (mkdir(o.png, 0777) != 0 && errno != EEXIST) {
+            fprintf(stderr, "strand run: cannot create %s: %s\n", o.png, strerror(errno));
+            scene_free(&sc);
+            return 1;
+        }
+        out.png_dir = o.png;
+        render_view_fit(&out.view, &sc, frames);
+    }
+    if (o.csv && !(out.csv = open_temp(o.csv, csv_tmp, sizeof csv_tmp))) {
+        scene_free(&sc);
+        return 1;
+    }
+    if (o.hex && !(out.hex = open_temp(o.hex, hex_tmp, sizeof hex_tmp))) {
+        close_temp(out.csv, csv_tmp, o.csv, false);
+        scene_free(&sc);
+        return 1;
+    }
+    if (out.csv) fprintf(out.csv, sc.dim == 3 ? "frame,node,x,y,z\n" : "frame,node,x,y\n");
+
+    ok = run_scene(&sc, kind, &sc.fmt, frames, run_hook, &out, &st) && !out.failed;
+    ok = ok && st.finite;
+    if (out.csv && !close_temp(out.csv, csv_tmp, o.csv, ok)) ok = false;
+    if (out.hex && !close_temp(out.hex, hex_tmp, o.hex, ok)) ok = false;
+
+    printf("%s: %d frames, %s, %d nodes\n", sc.name, st.frames, format_name(kind, &sc.fmt, fmtbuf, sizeof fmtbuf), sc.n_nodes);
+    printf("max stretch %.4f %%   energy %.6g -> %.6g   drift %+.6g (%+.3f %%)%s\n", st.max_stretch, st.energy0, st.energy, st.drift,
+           st.drift_pct, st.finite ? "" : "   NON-FINITE VALUES");
+    if (st.skipped) printf("corrections skipped for zero lengths: %ld\n", st.skipped);
+    scene_free(&sc);
+    return ok ? 0 : 1;
+}
+
+/* ---- compare ---- */
+
+static int cmd_compare(int argc, char **argv)
+{
+    options o;
+    int rc = 0, frames;
+    scene sc;
+    runner fx, dbl;
+    double (*pf)[3], (*pd)[3];
+    double sum2 = 0, worst = 0, stretch_fx = 0, stretch_dbl = 0, scale;
+    long samples = 0;
+    char fmtbuf[96];
+    const char *path = parse_options("compare", argc, argv, &o, "f", &rc);
+    if (!path) {
+        if (o.help) fputs(usage_compare, stdout);
+        return rc;
+    }
+    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    {
+        char buf[160];
+        const char *msg = scene_check_format(&sc, &sc.fmt, buf, sizeof buf);
+        if (msg) {
+            fprintf(stderr, "%s:1: %s\n", sc.path, msg);
+            scene_free(&sc);
+            return EXIT_BAD_INPUT;
+        }
+    }
+    frames = o.frames >= 0 ? o.frames : sc.frames;
+    scale = stats_length_scale(&sc);
+    pf = calloc((size_t)sc.n_nodes, sizeof *pf);
+    pd = calloc((size_t)sc.n_nodes, sizeof *pd);
+    if (!pf || !pd || !runner_init(&fx, &sc, NUMBER_FIXED, &sc.fmt) || !runner_init(&dbl, &sc, NUMBER_DOUBLE, NULL)) {
+        fprintf(stderr, "strand compare: out of memory\n");
+        return 1;
+    }
+    for (int f = 1; f <= frames; f++) {
+        runner_frame(&fx);
+        runner_frame(&dbl);
+        runner_positions(&fx, pf);
+        runner_positions(&dbl, pd);
+        for (int i = 0; i < sc.n_nodes; i++) {
+            double e2 = 0;
+            for (int k = 0; k < 3; k++) e2 += (pf[i][k] - pd[i][k]) * (pf[i][k] - pd[i][k]);
+            sum2 += e2;
+            samples++;
+            if (!(sqrt(e2) <= worst)) worst = sqrt(e2);
+        }
+        stretch_fx = fmax(stretch_fx, stats_max_stretch(&sc, pf));
+        stretch_dbl = fmax(stretch_dbl, stats_max_stretch(&sc, pd));
+    }
+    printf("%s: %d frames, fixed %s against double\n", sc.name, frames, format_name(NUMBER_FIXED, &sc.fmt, fmtbuf, sizeof fmtbuf));
+    printf("position error: rms %.6g, max %.6g rest lengths (rest length %g)\n", samples ? sqrt(sum2 / samples) / scale : 0, worst / scale,
+           scale);
+    printf("max stretch: fixed %.4f %%, double %.4f %%\n", stretch_fx, stretch_dbl);
+    runner_free(&fx);
+    runner_free(&dbl);
+    free(pf);
+    free(pd);
+    scene_free(&sc);
+    return isfinite(worst) ? 0 : 1;
+}
+
+int main(int argc, char **argv)
+{
+    if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
+        fputs(usage_main, argc < 2 ? stderr : stdout);
+        return argc < 2 ? EXIT_BAD_INPUT : 0;
+    }
+    if (!strcmp(argv[1], "check")) return cmd_check(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "compare")) return cmd_compare(argc - 1, argv + 1);
+    fprintf(stderr, "strand: unknown command '%s'\n%s", argv[1], usage_main);
+    return EXIT_BAD_INPUT;
+}
