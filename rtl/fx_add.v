@@ -1,0 +1,50 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * fx_add - saturating fixed-point add / subtract.
+ *
+ * Computes  y = sat(a + b)  when sub = 0  and  y = sat(a - b)  when sub = 1,
+ * mirroring fx_add() and fx_sub() in model/fixed.h.
+ *
+ * Ports:   a, b, y are signed two's complement, W bits, any Q format (the binary
+ *          point does not move in an add, so F is not a parameter).
+ * Algorithm: both operands are sign-extended to W+1 bits; the W+1-bit sum or
+ *          difference is exact (its range is [-2^W+1, 2^W-1]). If its two top
+ *          bits differ the result left the W-bit range and is clamped to
+ *          2^(W-1)-1 (positive overflow) or -2^(W-1) (negative overflow).
+ * Rounding: none (exact).
+ * Overflow: saturates, never wraps; sat = 1 when clamping happened.
+ * Latency: combinational, 0 cycles; throughput one result per cycle.
+ */
+module fx_add #(
+    parameter integer W = 32 // total width in bits, 8..32
+) (
+    input  wire         sub, // 0: a + b, 1: a - b
+    input  wire [W-1:0] a,   // signed, W bits
+    input  wire [W-1:0] b,   // signed, W bits
+    output reg  [W-1:0] y,   // signed, W bits, saturated
+    output reg          sat  // 1 when y was clamped
+);
+
+    initial begin
+        if (W < 8 || W > 32) $error("fx_add: W must be 8..32 (W=%0d) in %m", W);
+    end
+
+    wire [W:0] a_ext = {a[W-1], a};
+    wire [W:0] b_ext = {b[W-1], b};
+    wire [W:0] sum   = sub ? a_ext - b_ext : a_ext + b_ext; // exact in W+1 bits
+
+    always @* begin
+        sat = sum[W] ^ sum[W-1];
+        if (!sat)
+            y = sum[W-1:0];
+        else if (sum[W])
+            y = {1'b1, {(W-1){1'b0}}}; // below -2^(W-1): clamp to the minimum
+        else
+            y = {1'b0, {(W-1){1'b1}}}; // above 2^(W-1)-1: clamp to the maximum
+    end
+
+endmodule
+
+`resetall

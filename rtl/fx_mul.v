@@ -1,0 +1,65 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * fx_mul - fixed-point multiply, rounded to nearest (ties to even), saturated.
+ *
+ * Computes  y = sat(round(a * b / 2^F))  mirroring fx_mul() in model/fixed.h.
+ *
+ * Ports:   a, b, y are signed two's complement Q(W-F).F, W bits.
+ * Algorithm: p = a * b, the exact signed 2W-bit product (Q(2W-2F).2F).
+ *          q = p >>> F is the floor of p / 2^F (2W-F bits). Of the F dropped bits,
+ *          the top one is "half" (worth half an LSB) and the OR of the others is
+ *          "sticky". q is incremented when the dropped part is above one half
+ *          (half & sticky) or exactly one half and q is odd (half & q[0]).
+ *          The increment cannot overflow 2W-F bits: the largest q, 2^(2W-2-F),
+ *          comes from (-2^(W-1))^2 whose dropped bits are zero.
+ *          The rounded value is clamped to the W-bit range.
+ * Rounding: to nearest, ties to even (unbiased: a resting rope does not creep).
+ * Overflow: saturates to 2^(W-1)-1 or -2^(W-1); sat = 1 when clamping happened.
+ * Latency: combinational, 0 cycles; throughput one result per cycle. The W x W
+ *          multiply maps to one DSP block up to 18x18 (W <= 18).
+ */
+module fx_mul #(
+    parameter integer W = 32, // total width in bits, 8..32
+    parameter integer F = 16  // fraction bits, 1..W-2
+) (
+    input  wire [W-1:0] a,  // signed Q(W-F).F
+    input  wire [W-1:0] b,  // signed Q(W-F).F
+    output reg  [W-1:0] y,  // signed Q(W-F).F, rounded and saturated
+    output reg          sat // 1 when y was clamped
+);
+
+    initial begin
+        if (W < 8 || W > 32) $error("fx_mul: W must be 8..32 (W=%0d) in %m", W);
+        if (F < 1 || F > W - 2) $error("fx_mul: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F);
+    end
+
+    localparam integer QW = 2 * W - F; // width of the shifted product
+
+    wire signed [2*W-1:0] p = $signed(a) * $signed(b); // exact product
+    wire [QW-1:0] q    = p[2*W-1:F];                  // floor(p / 2^F)
+    wire [F-1:0]  drop = p[F-1:0];                    // bits shifted out
+    wire [F-1:0]  rest = drop << 1;                   // dropped bits below "half"
+    wire          half   = drop[F-1];
+    wire          sticky = |rest;
+    wire          round_up = half & (sticky | q[0]);
+    wire [QW-1:0] qr   = q + {{(QW-1){1'b0}}, round_up};
+
+    // qr fits W bits when its bits QW-1 .. W-1 are all copies of the sign.
+    wire [QW-W:0] top  = qr[QW-1:W-1];
+    wire          fits = (top == {(QW-W+1){1'b0}}) || (top == {(QW-W+1){1'b1}});
+
+    always @* begin
+        sat = !fits;
+        if (fits)
+            y = qr[W-1:0];
+        else if (qr[QW-1])
+            y = {1'b1, {(W-1){1'b0}}}; // below the range: minimum
+        else
+            y = {1'b0, {(W-1){1'b1}}}; // above the range: maximum
+    end
+
+endmodule
+
+`resetall
