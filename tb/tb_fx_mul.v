@@ -1,0 +1,83 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * tb_fx_mul - self-checking testbench for rtl/fx_mul.v.
+ *
+ * Reads vectors written by tb/gen_vectors.c (record: flags {0,0,0,sat}, a, b, y)
+ * and checks y and sat for each. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with
+ * $fatal (exit status 1) on failure or timeout.
+ */
+module tb_fx_mul;
+
+    parameter integer W    = 32;      // width under test
+    parameter integer F    = 16;      // fraction bits under test
+    parameter integer MAXN = 1 << 18; // capacity of the vector memory
+
+    localparam integer FD = 4 * ((W + 3) / 4); // a W-bit field padded to hex digits
+    localparam integer RW = 4 + 3 * FD;        // record width
+
+    reg [RW-1:0]   mem [0:MAXN-1];
+    reg [8*64-1:0] name;
+    reg [8*256-1:0] file;
+    integer        n, i, errors;
+    integer        bad_i;
+    reg [W-1:0]    bad_got, bad_exp;
+    reg            bad_sat_got, bad_sat_exp;
+
+    reg  [W-1:0]   a, b;
+    wire [W-1:0]   y;
+    wire           sat;
+    reg  [W-1:0]   y_exp;
+    reg            sat_exp;
+
+    fx_mul #(.W(W), .F(F)) dut (.a(a), .b(b), .y(y), .sat(sat));
+
+    // Watchdog: one vector takes 2 ns.
+    initial begin
+        #(64'd2 * MAXN + 64'd1000);
+        $display("FAIL %0s: timeout", name);
+        $fatal(1, "timeout");
+    end
+
+    initial begin
+        if (!$value$plusargs("name=%s", name)) name = "tb_fx_mul";
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
+            $display("FAIL %0s: need +vectors=FILE and +n=1..%0d", name, MAXN);
+            $fatal(1, "bad arguments");
+        end
+        $readmemh(file, mem, 0, n - 1);
+        if (^mem[n - 1] === 1'bx) begin
+            $display("FAIL %0s: vector file %0s has fewer than %0d records", name, file, n);
+            $fatal(1, "short vector file");
+        end
+        errors = 0;
+        bad_i = -1;
+        for (i = 0; i < n; i = i + 1) begin
+            sat_exp = mem[i][RW-4];
+            a       = mem[i][3*FD-1 -: W];
+            b       = mem[i][2*FD-1 -: W];
+            y_exp   = mem[i][FD-1 -: W];
+            #1;
+            if (y !== y_exp || sat !== sat_exp) begin
+                if (errors == 0) begin
+                    bad_i = i; bad_got = y; bad_exp = y_exp; bad_sat_got = sat; bad_sat_exp = sat_exp;
+                end
+                errors = errors + 1;
+            end
+            #1;
+        end
+        if (errors != 0) begin
+            $display("FAIL %0s: %0d of %0d vectors wrong; first #%0d a=%h b=%h: y=%h sat=%b, expected y=%h sat=%b",
+                     name, errors, n, bad_i,
+                     mem[bad_i][3*FD-1 -: W], mem[bad_i][2*FD-1 -: W], bad_got, bad_sat_got, bad_exp, bad_sat_exp);
+            $fatal(1, "mismatch");
+        end
+        $display("PASS %0s (%0d vectors)", name, n);
+        $finish;
+    end
+
+endmodule
+
+`resetall
