@@ -140,7 +140,7 @@ bool run_scene(const scene *sc, number_kind kind, const fx_format *fmt, int fram
     ref = stats_lowest(sc, pos);
     st->energy0 = st->energy = stats_energy(sc, pos, vel, ref, &ke);
     st->ke_max = ke;
-    st->max_stretch = stats_max_stretch(sc, pos);
+    st->max_stretch = st->final_stretch = stats_max_stretch(sc, pos);
     for (int f = 1; f <= frames; f++) {
         runner_frame(&r);
         runner_positions(&r, pos);
@@ -150,7 +150,11 @@ bool run_scene(const scene *sc, number_kind kind, const fx_format *fmt, int fram
         if (!(s <= st->max_stretch)) st->max_stretch = s;
         st->energy = stats_energy(sc, pos, vel, ref, &ke);
         if (ke > st->ke_max) st->ke_max = ke;
-        if (!isfinite(st->energy) || !isfinite(s)) st->finite = false;
+        st->final_stretch = s;
+        if ((!isfinite(st->energy) || !isfinite(s)) && st->finite) {
+            st->finite = false;
+            st->first_nonfinite = f;
+        }
         if (hook && !hook(user, &r, f, pos)) {
             ok = false;
             break;

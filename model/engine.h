@@ -41,11 +41,13 @@ double stats_length_scale(const scene *sc);
 typedef struct {
     int frames;
     double max_stretch;   /* percent, over the whole run */
+    double final_stretch; /* percent, at the last frame */
     double energy0, energy; /* at the start and the end */
     double drift;         /* energy - energy0 */
     double drift_pct;     /* drift as % of the largest of energy0 and the peak kinetic energy */
     double ke_max;
     bool finite;          /* no NaN or infinity appeared */
+    int first_nonfinite;  /* frame where one first appeared (0: none) */
     long skipped;
 } run_stats;
 

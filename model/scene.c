@@ -574,6 +574,43 @@ static bool build_graph(parser *p)
     return true;
 }
 
+/* A fixed-point scene: every value must fit the format; blame the line that gave it. */
+static bool fits_at(parser *p, double v, int line, const char *what)
+{
+    const fx_format *fmt = &p->sc->fmt;
+    double range = ldexp(1.0, fmt->width - fmt->frac - 1);
+    if (fx_fits(fmt, v)) return true;
+    return fail_at(p, line ? line : 1, "%s = %g does not fit Q%d.%d (range -%g..%g)", what, v, fmt->width - fmt->frac, fmt->frac, range,
+                   range);
+}
+
+static bool check_fits(parser *p)
+{
+    scene *sc = p->sc;
+    bool chain = sc->body == BODY_CHAIN;
+    int pos_line = chain ? blame(p, S_CHAIN, key_line(p, S_CHAIN, "end") ? "end" : "step") : 0;
+    int prev_line = blame(p, chain ? S_CHAIN : S_GRAPH, key_line(p, chain ? S_CHAIN : S_GRAPH, "velocity") ? "velocity" : "prev_offset");
+    for (int i = 0; i < sc->n_nodes; i++)
+        for (int k = 0; k < sc->dim; k++) {
+            if (!fits_at(p, sc->pos[i][k], chain ? (i ? pos_line : blame(p, S_CHAIN, "start")) : p->node_values[i].line, "a node position"))
+                return false;
+            if (!fits_at(p, sc->prev[i][k] - sc->pos[i][k], prev_line, "a node's initial motion")) return false;
+        }
+    for (int e = 0; e < sc->n_edges; e++)
+        if (!fits_at(p, sc->edges[e].rest, chain ? blame(p, S_CHAIN, "rest") : p->edge_lines[e], "a rest length")) return false;
+    for (int k = 0; k < sc->dim; k++) {
+        if (chain && !fits_at(p, sc->chain_step[k], pos_line, "the chain step")) return false;
+        if (sc->en_mouse && !fits_at(p, sc->mouse_box[k], p->box.line, "the mouse box")) return false;
+        for (int e = 0; e < sc->n_events; e++)
+            if (!fits_at(p, sc->events[e].pos[k], abs(p->event_lines[e]), "a mouse position")) return false;
+    }
+    if (sc->en_mouse && !fits_at(p, sc->mouse_impulse, blame(p, S_MOUSE, "impulse"), "the mouse impulse")) return false;
+    if (sc->en_ground &&
+        !fits_at(p, sc->ground_level + sc->ground_sign * sc->ground_radius, blame(p, S_GROUND, "level"), "the ground boundary"))
+        return false;
+    return true;
+}
+
 static bool finish(parser *p)
 {
     scene *sc = p->sc;
@@ -592,7 +629,8 @@ static bool finish(parser *p)
     if (!key_line(p, S_FORMAT, "div_bits")) sc->fmt.div_bits = sc->fmt.width - 1;
     if ((msg = fx_format_check(&sc->fmt))) {
         const char *key = sc->fmt.frac > sc->fmt.width - 2 ? "frac" : sc->fmt.sqrt_bits > sc->fmt.width - 1 ? "sqrt_bits" : "div_bits";
-        return fail_at(p, blame(p, S_FORMAT, key), "%s (width = %d)", msg, sc->fmt.width);
+        if (!key_line(p, S_FORMAT, key)) key = "width"; /* a default no longer fits the width */
+        return fail_at(p, blame(p, S_FORMAT, key), "%s (width = %d, frac = %d)", msg, sc->fmt.width, sc->fmt.frac);
     }
 
     /* effects are on when named */
@@ -664,11 +702,7 @@ static bool finish(parser *p)
     for (int i = 0; i < sc->n_nodes; i++)
         if (sc->pinned[i]) memcpy(sc->prev[i], sc->pos[i], sizeof sc->prev[i]);
 
-    if (sc->number == NUMBER_FIXED) {
-        char buf[160];
-        if ((msg = scene_check_format(sc, &sc->fmt, buf, sizeof buf)))
-            return fail_at(p, blame(p, S_FORMAT, "frac"), "%s", msg);
-    }
+    if (sc->number == NUMBER_FIXED) return check_fits(p);
     return true;
 }
 

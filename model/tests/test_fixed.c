@@ -1,0 +1,289 @@
+/*
+ * test_fixed.c - the fixed-point contract against independent references.
+ *
+ * The model computes bit-serially (fixed.c); the references here compute the same
+ * rounded results another way: long double (64-bit mantissa, exact for these
+ * products) with ties-to-even rounding from the FPU, and integer division.
+ * Exhaustive at W=8 and W=12, random and edge vectors at W=32.
+ */
+#include <fenv.h>
+#include <math.h>
+#include <setjmp.h>
+#include <stdarg.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdio.h>
+#include <stdlib.h>
+
+#include <cmocka.h>
+
+#include "fixed.h"
+
+static fx_format fmt_of(int w, int f, int sqrt_bits, int div_bits) { return (fx_format){w, f, sqrt_bits, div_bits}; }
+
+static int64_t sat_ref(const fx_format *fmt, long double v)
+{
+    long double hi = ldexpl(1.0L, fmt->width - 1) - 1, lo = -ldexpl(1.0L, fmt->width - 1);
+    return (int64_t)(v > hi ? hi : v < lo ? lo : v);
+}
+
+/* round(p / 2^n), ties to even, by the FPU */
+static long double round_ref(long double p, int n) { return nearbyintl(ldexpl(p, -n)); }
+
+static int64_t mul_ref(const fx_format *fmt, int64_t a, int64_t b) { return sat_ref(fmt, round_ref((long double)(a * b), fmt->frac)); }
+
+static uint64_t isqrt_ref(uint64_t n)
+{
+    uint64_t r = (uint64_t)sqrtl((long double)n);
+    while (r * r > n) r--;
+    while ((r + 1) * (r + 1) <= n) r++;
+    return r;
+}
+
+/* The root truncated to the resolved bits, then rounded to nearest at the last of them. */
+static int64_t sqrt_ref(const fx_format *fmt, uint64_t n)
+{
+    int lsb = fmt->width - 1 - fmt->sqrt_bits;
+    uint64_t unit = UINT64_C(1) << lsb, max = (UINT64_C(1) << (fmt->width - 1)) - 1;
+    uint64_t r = isqrt_ref(n);
+    if (r > max) return (int64_t)max;
+    uint64_t t = r / unit * unit;
+    /* round up iff (t + unit/2)^2 <= n, i.e. (2t + unit)^2 <= 4n, exact in long double */
+    long double twice = (long double)(2 * t + unit);
+    if (twice * twice <= 4.0L * (long double)n) t += unit;
+    return (int64_t)(t > max ? max : t);
+}
+
+static int64_t div_ref(const fx_format *fmt, uint64_t num, uint64_t den)
+{
+    int lsb = fmt->width - 1 - fmt->div_bits;
+    uint64_t unit = UINT64_C(1) << lsb, max = (UINT64_C(1) << (fmt->width - 1)) - 1;
+    uint64_t dividend = num << fmt->frac;
+    if (den == 0) return (int64_t)max;
+    uint64_t q = dividend / den;
+    if (q > max) return (int64_t)max;
+    uint64_t t = q / unit * unit;
+    /* round up iff the remainder is at least half a unit: 2 (dividend - t den) >= unit den */
+    if (2 * (dividend - t * den) >= unit * den) t += unit;
+    return (int64_t)(t > max ? max : t);
+}
+
+/* ---- exhaustive at narrow widths ---- */
+
+static void exhaust_binary_ops(int w, int f)
+{
+    fx_format fmt = fmt_of(w, f, w - 1, w - 1);
+    int64_t lo = fx_min(&fmt), hi = fx_max(&fmt);
+    for (int64_t a = lo; a <= hi; a++)
+        for (int64_t b = lo; b <= hi; b++) {
+            int64_t mul = fx_mul(&fmt, (fx_t)a, (fx_t)b);
+            if (mul != mul_ref(&fmt, a, b)) fail_msg("W=%d F=%d mul %lld * %lld: %lld, expected %lld", w, f, (long long)a, (long long)b, (long long)mul, (long long)mul_ref(&fmt, a, b));
+            assert_int_equal(fx_add(&fmt, (fx_t)a, (fx_t)b), sat_ref(&fmt, (long double)(a + b)));
+            assert_int_equal(fx_sub(&fmt, (fx_t)a, (fx_t)b), sat_ref(&fmt, (long double)(a - b)));
+            assert_int_equal(fx_avg(&fmt, (fx_t)a, (fx_t)b), sat_ref(&fmt, round_ref((long double)(a + b), 1)));
+        }
+    for (int64_t a = lo; a <= hi; a++) assert_int_equal(fx_half(&fmt, (fx_t)a), round_ref((long double)a, 1));
+}
+
+static void test_binary_ops_w8(void **state)
+{
+    (void)state;
+    for (int f = 1; f <= 6; f++) exhaust_binary_ops(8, f);
+}
+
+static void test_binary_ops_w12(void **state)
+{
+    (void)state;
+    exhaust_binary_ops(12, 6);
+    exhaust_binary_ops(12, 10);
+}
+
+static void exhaust_sqrt(int w, int sqrt_bits)
+{
+    fx_format fmt = fmt_of(w, w / 2, sqrt_bits, w - 1);
+    for (uint64_t n = 0; n < (UINT64_C(1) << (2 * w)); n++) {
+        int64_t got = fx_sqrt(&fmt, n), want = sqrt_ref(&fmt, n);
+        if (got != want) fail_msg("W=%d SQRT_BITS=%d sqrt(%llu): %lld, expected %lld", w, sqrt_bits, (unsigned long long)n, (long long)got, (long long)want);
+    }
+}
+
+static void test_sqrt_w8_every_radicand_every_bits(void **state)
+{
+    (void)state;
+    for (int s = 1; s <= 7; s++) exhaust_sqrt(8, s);
+}
+
+static void test_sqrt_w12_every_radicand(void **state)
+{
+    (void)state;
+    exhaust_sqrt(12, 11);
+    exhaust_sqrt(12, 6);
+}
+
+static void exhaust_div(int w, int f, int div_bits)
+{
+    fx_format fmt = fmt_of(w, f, w - 1, div_bits);
+    for (uint64_t num = 0; num < (UINT64_C(1) << w); num++)
+        for (uint64_t den = 0; den < (UINT64_C(1) << w); den++) {
+            bool dz = false;
+            int64_t got = fx_div(&fmt, (uint32_t)num, (uint32_t)den, &dz), want = div_ref(&fmt, num, den);
+            if (got != want || dz != (den == 0))
+                fail_msg("W=%d F=%d DIV_BITS=%d div %llu / %llu: %lld (dz %d), expected %lld", w, f, div_bits, (unsigned long long)num,
+                         (unsigned long long)den, (long long)got, dz, (long long)want);
+        }
+}
+
+static void test_div_w8_every_pair_every_bits(void **state)
+{
+    (void)state;
+    for (int d = 1; d <= 7; d++) exhaust_div(8, 4, d);
+    exhaust_div(8, 1, 7);
+    exhaust_div(8, 6, 7);
+}
+
+static void test_div_w12_every_pair(void **state)
+{
+    (void)state;
+    exhaust_div(12, 8, 11);
+}
+
+/* ---- W=32: random and edge vectors ---- */
+
+static uint64_t rng_state = 0x9e3779b97f4a7c15ull;
+static uint64_t rnd(void) /* splitmix64 */
+{
+    uint64_t z = (rng_state += 0x9e3779b97f4a7c15ull);
+    z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+    z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+    return z ^ (z >> 31);
+}
+
+static fx_t rnd_fx(const fx_format *fmt)
+{
+    static const int64_t edges[] = {0, 1, -1, 2, -2};
+    int pick = (int)(rnd() % 16);
+    if (pick < 5) return (fx_t)edges[pick];
+    if (pick == 5) return fx_max(fmt);
+    if (pick == 6) return fx_min(fmt);
+    if (pick == 7) return fx_max(fmt) - 1;
+    if (pick == 8) return fx_min(fmt) + 1;
+    if (pick == 9) return fx_one(fmt);
+    if (pick == 10) return -fx_one(fmt);
+    if (pick == 11) return (fx_t)((int64_t)(rnd() % 4096) - 2048) << (rnd() % 8); /* small values */
+    return (fx_t)(int32_t)(uint32_t)rnd();
+}
+
+static void test_w32_random_and_edges(void **state)
+{
+    (void)state;
+    for (int f = 8; f <= 24; f += 8) {
+        fx_format fmt = fmt_of(32, f, 31, 31);
+        for (int i = 0; i < 200000; i++) {
+            fx_t a = rnd_fx(&fmt), b = rnd_fx(&fmt);
+            assert_int_equal(fx_mul(&fmt, a, b), mul_ref(&fmt, a, b));
+            assert_int_equal(fx_add(&fmt, a, b), sat_ref(&fmt, (long double)a + b));
+            assert_int_equal(fx_avg(&fmt, a, b), round_ref((long double)a + b, 1));
+            uint64_t n = fx_sumsq(a, b, rnd_fx(&fmt)) >> (rnd() % 64);
+            assert_int_equal(fx_sqrt(&fmt, n), sqrt_ref(&fmt, n));
+            uint32_t num = (uint32_t)rnd() >> (rnd() % 32), den = (uint32_t)rnd() >> (rnd() % 32);
+            assert_int_equal(fx_div(&fmt, num, den, NULL), div_ref(&fmt, num, den));
+        }
+    }
+    /* reduced precision at W=32: the accuracy knobs */
+    for (int bits = 1; bits <= 31; bits += 5) {
+        fx_format fmt = fmt_of(32, 16, bits, bits);
+        for (int i = 0; i < 20000; i++) {
+            uint64_t n = rnd() >> (rnd() % 64);
+            uint32_t num = (uint32_t)rnd() >> (rnd() % 32), den = (uint32_t)rnd() >> (rnd() % 32);
+            assert_int_equal(fx_sqrt(&fmt, n), sqrt_ref(&fmt, n));
+            assert_int_equal(fx_div(&fmt, num, den, NULL), div_ref(&fmt, num, den));
+        }
+    }
+}
+
+/* ---- the rules, stated by hand ---- */
+
+static void test_rounding_ties_to_even(void **state)
+{
+    fx_format q4 = fmt_of(16, 4, 15, 15); /* 1.0 = 16 */
+    (void)state;
+    assert_int_equal(fx_mul(&q4, 3, 8), 2);   /* 24/16 = 1.5 -> 2 */
+    assert_int_equal(fx_mul(&q4, 1, 8), 0);   /* 0.5 -> 0 */
+    assert_int_equal(fx_mul(&q4, 5, 8), 2);   /* 2.5 -> 2 */
+    assert_int_equal(fx_mul(&q4, -1, 8), 0);  /* -0.5 -> 0 */
+    assert_int_equal(fx_mul(&q4, -3, 8), -2); /* -1.5 -> -2 */
+    assert_int_equal(fx_mul(&q4, 3, 9), 2);   /* 27/16 = 1.6875 -> 2 */
+    assert_int_equal(fx_mul(&q4, -3, 9), -2);
+    assert_int_equal(fx_avg(&q4, 1, 2), 2); /* 1.5 -> 2 */
+    assert_int_equal(fx_avg(&q4, 1, 0), 0); /* 0.5 -> 0 */
+    assert_int_equal(fx_half(&q4, -3), -2); /* -1.5 -> -2 */
+}
+
+/* Ties to even is unbiased: the rounding errors of a symmetric sweep cancel exactly. */
+static void test_rounding_has_no_bias(void **state)
+{
+    fx_format fmt = fmt_of(16, 8, 15, 15);
+    long long err = 0;
+    (void)state;
+    for (int a = 0; a < 4096; a++) err += (long long)fx_mul(&fmt, (fx_t)a, 128) * 2 - a; /* a/2 rounded, error x2 */
+    assert_int_equal(err, 0);
+}
+
+static void test_saturation_never_wraps(void **state)
+{
+    fx_format fmt = fmt_of(18, 8, 17, 17);
+    (void)state;
+    assert_int_equal(fx_add(&fmt, fx_max(&fmt), 1), fx_max(&fmt));
+    assert_int_equal(fx_sub(&fmt, fx_min(&fmt), 1), fx_min(&fmt));
+    assert_int_equal(fx_mul(&fmt, fx_max(&fmt), fx_max(&fmt)), fx_max(&fmt));
+    assert_int_equal(fx_mul(&fmt, fx_min(&fmt), fx_max(&fmt)), fx_min(&fmt));
+    assert_int_equal(fx_mul(&fmt, fx_min(&fmt), fx_min(&fmt)), fx_max(&fmt));
+    assert_int_equal(fx_neg(&fmt, fx_min(&fmt)), fx_max(&fmt));
+    assert_int_equal(fx_avg(&fmt, fx_max(&fmt), fx_max(&fmt)), fx_max(&fmt));
+    assert_int_equal(fx_avg(&fmt, fx_min(&fmt), fx_min(&fmt)), fx_min(&fmt));
+}
+
+static void test_zero_length_is_flagged(void **state)
+{
+    fx_format fmt = fmt_of(32, 16, 31, 31);
+    bool dz = false;
+    (void)state;
+    assert_int_equal(fx_div(&fmt, 100, 0, &dz), fx_max(&fmt));
+    assert_true(dz);
+    fx_div(&fmt, 100, 1, &dz);
+    assert_false(dz);
+    assert_int_equal(fx_sqrt(&fmt, 0), 0);
+    assert_int_equal(fx_div_signed(&fmt, -fx_one(&fmt), 2 * fx_one(&fmt), NULL), -fx_one(&fmt) / 2);
+}
+
+static void test_format_check(void **state)
+{
+    fx_format ok = fmt_of(18, 8, 17, 17), wide = fmt_of(33, 8, 17, 17), frac = fmt_of(18, 17, 17, 17), sq = fmt_of(18, 8, 18, 17),
+              dv = fmt_of(18, 8, 17, 0);
+    (void)state;
+    assert_null(fx_format_check(&ok));
+    assert_non_null(fx_format_check(&wide));
+    assert_non_null(fx_format_check(&frac));
+    assert_non_null(fx_format_check(&sq));
+    assert_non_null(fx_format_check(&dv));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_binary_ops_w8),
+        cmocka_unit_test(test_binary_ops_w12),
+        cmocka_unit_test(test_sqrt_w8_every_radicand_every_bits),
+        cmocka_unit_test(test_sqrt_w12_every_radicand),
+        cmocka_unit_test(test_div_w8_every_pair_every_bits),
+        cmocka_unit_test(test_div_w12_every_pair),
+        cmocka_unit_test(test_w32_random_and_edges),
+        cmocka_unit_test(test_rounding_ties_to_even),
+        cmocka_unit_test(test_rounding_has_no_bias),
+        cmocka_unit_test(test_saturation_never_wraps),
+        cmocka_unit_test(test_zero_length_is_flagged),
+        cmocka_unit_test(test_format_check),
+    };
+    fesetround(FE_TONEAREST);
+    return cmocka_run_group_tests_name("fixed-point arithmetic", tests, NULL, NULL);
+}
