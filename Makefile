@@ -23,12 +23,16 @@ STRAND    := $(BUILD)/strand
 
 SCENES    := $(wildcard sim/scenes/*.scene)
 
-.PHONY: help bootstrap model test test-model test-scenes lint lint-c clean
+SCENE     ?= sim/scenes/ref000_rope.scene
+RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
+
+.PHONY: help bootstrap model run test test-model test-scenes lint lint-c clean
 .DEFAULT_GOAL := help
 
 help:
 	@echo "Strand make targets:"
 	@echo "  make test        install what is missing, then run every test (ends with 'N passed, N failed')"
+	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
 	@echo "  make model       build the C model library and the CLI, $(STRAND)"
 	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
@@ -52,6 +56,13 @@ $(STRAND): model/strand.c $(MODEL_LIB)
 
 model: $(STRAND)
 
+run: bootstrap
+	@$(MAKE) --no-print-directory -s model
+	@mkdir -p $(RUN_DIR)
+	$(STRAND) run $(SCENE) --csv $(RUN_DIR)/positions.csv --png $(RUN_DIR)/frames
+	$(STRAND) compare $(SCENE)
+	@echo "positions: $(RUN_DIR)/positions.csv   pictures: $(RUN_DIR)/frames/"
+
 # ---- C unit tests (cmocka) ----
 
 MODEL_TESTS := $(patsubst model/tests/%.c,$(BUILD)/tests/%,$(wildcard model/tests/test_*.c))
@@ -67,7 +78,7 @@ test-model: $(MODEL_TESTS) $(STRAND)
 # Every shipped scene runs in both formats.
 test-scenes: $(STRAND)
 	@for s in $(SCENES); do for f in fixed double; do \
-	  if $(STRAND) run $$s --format $$f --frames 50 > $(BUILD)/scene-run.log 2>&1; \
+	  if $(STRAND) run $$s --format $$f > $(BUILD)/scene-run.log 2>&1; \
 	  then echo "PASS run $$s --format $$f"; else echo "FAIL run $$s --format $$f"; cat $(BUILD)/scene-run.log; fi; \
 	done; done
 
