@@ -27,21 +27,28 @@ module fx_mul #(
     input  wire [W-1:0] a,  // signed Q(W-F).F
     input  wire [W-1:0] b,  // signed Q(W-F).F
     output reg  [W-1:0] y,  // signed Q(W-F).F, rounded and saturated
-    output reg          sat // 1 when y was clamped
+    output reg          sat, // 1 when y was clamped
+    output wire [2*W-1:0] prod // the exact 2W-bit product (sums of squares use it unrounded)
 );
 
+    // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses
+    // the $error). FS is a clamped copy of F so that elaboration gets as far as
+    // reporting it.
     initial begin
         if (W < 8 || W > 32) $error("fx_mul: W must be 8..32 (W=%0d) in %m", W);
         if (F < 1 || F > W - 2) $error("fx_mul: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F);
+        if (W < 8 || W > 32 || F < 1 || F > W - 2) $fatal(1, "fx_mul: bad parameters in %m");
     end
 
-    localparam integer QW = 2 * W - F; // width of the shifted product
+    localparam integer FS = (F < 1) ? 1 : (F > W - 2) ? W - 2 : F; // F, clamped
+    localparam integer QW = 2 * W - FS;                            // width of the shifted product
 
     wire signed [2*W-1:0] p = $signed(a) * $signed(b); // exact product
-    wire [QW-1:0] q    = p[2*W-1:F];                  // floor(p / 2^F)
-    wire [F-1:0]  drop = p[F-1:0];                    // bits shifted out
-    wire [F-1:0]  rest = drop << 1;                   // dropped bits below "half"
-    wire          half   = drop[F-1];
+    assign prod = p;
+    wire [QW-1:0] q    = p[2*W-1:FS];                 // floor(p / 2^F)
+    wire [FS-1:0] drop = p[FS-1:0];                   // bits shifted out
+    wire [FS-1:0] rest = drop << 1;                   // dropped bits below "half"
+    wire          half   = drop[FS-1];
     wire          sticky = |rest;
     wire          round_up = half & (sticky | q[0]);
     wire [QW-1:0] qr   = q + {{(QW-1){1'b0}}, round_up};

@@ -1,0 +1,245 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * chain_sequencer - the constraint pass of reference 000 over a chain of M x K nodes.
+ *
+ * Walks C = node 0 .. N-1 (N = M x K) with registers uidx, nidx (C's unit and
+ * node) and counter (nodes finished). It keeps a window of three nodes, U (the
+ * previous node, already corrected), C and D (the next node), so each node costs
+ * one storage read. For each C it asks the `toward` datapath for the point at
+ * `rest_len` from U toward C, then for the point at `rest_len` from D toward C, and writes
+ * C := their average (fx_avg), or the one that exists at a rope end or beside a
+ * zero length; a pinned C is not written (model/engine_body.h centred_node()).
+ * FEC = (counter == N). The pass repeats ITER times.
+ *
+ * Every node takes the same number of cycles, pinned, end or zero length alike,
+ * so a pass takes 2 + N * (2 * (LT + 1) + 1) cycles from `start`, LT being
+ * toward's latency (docs/architecture.md derives it).
+ *
+ * Storage is read through the units' synchronous port A: rd_* address this cycle,
+ * data (rd_x, rd_y, rd_pinned) next cycle.
+ */
+module chain_sequencer #(
+    parameter integer W         = 32,    // word width, bits
+    parameter integer F         = 16,    // fraction bits
+    parameter integer M         = 4,     // units
+    parameter integer K         = 5,     // nodes per unit
+    parameter integer UW        = 2,     // unit index width, >= 1
+    parameter integer IW        = 3,     // node index width, >= 1
+    parameter integer CW        = 5,     // counter width, holds M*K
+    parameter integer ITER      = 1,     // passes per constraint phase
+    parameter integer SQRT_BITS = W - 1, // root bits resolved
+    parameter integer DIV_BITS  = W - 1  // quotient bits resolved
+) (
+    input  wire          clk,
+    input  wire          reset,      // synchronous, active high
+    input  wire          start,      // one-cycle pulse: run ITER passes
+    output reg           done,       // one-cycle pulse after the last pass
+    input  wire [W-1:0]  rest_len,       // rest length
+
+    output reg  [UW-1:0] rd_uidx,    // storage read address (combinational)
+    output reg  [IW-1:0] rd_nidx,
+    input  wire [W-1:0]  rd_x,       // its data, the next cycle
+    input  wire [W-1:0]  rd_y,
+    input  wire          rd_pinned,
+
+    output reg           wr_en,      // write C
+    output wire [UW-1:0] wr_uidx,
+    output wire [IW-1:0] wr_nidx,
+    output wire [W-1:0]  wr_x,
+    output wire [W-1:0]  wr_y,
+
+    output reg  [UW-1:0] uidx,       // C's unit
+    output reg  [IW-1:0] nidx,       // C's node within the unit
+    output reg  [CW-1:0] counter,    // nodes finished in this pass
+    output wire          fec         // counter == M x K
+);
+
+    localparam integer N     = M * K;
+    localparam integer ITW   = ITER > 1 ? $clog2(ITER) : 1;
+    localparam integer N_LAST_I = N - 1;
+    localparam integer K_LAST_I = K - 1;
+    localparam integer ITER_LAST_I = ITER - 1;
+    localparam [CW-1:0]  N_COUNT   = N[CW-1:0];
+    localparam [CW-1:0]  N_LAST    = N_LAST_I[CW-1:0];
+    localparam [IW-1:0]  K_LAST    = K_LAST_I[IW-1:0];
+    localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
+
+    initial begin
+        if (M < 1 || K < 1) $error("chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
+        if ((1 << CW) <= N) $error("chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N);
+        if ((1 << UW) < M || (1 << IW) < K) $error("chain_sequencer: UW/IW too narrow in %m");
+        if (ITER < 1) $error("chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER);
+    end
+
+    localparam [2:0] S_IDLE   = 3'd0, // waiting for start; node 0 is addressed
+                     S_LOAD_C = 3'd1, // node 0 arrives: C; node 1 is addressed
+                     S_LOAD_D = 3'd2, // node 1 arrives: D
+                     S_UP     = 3'd3, // ask for the point from U
+                     S_UP_W   = 3'd4, // wait; on done ask for the point from D
+                     S_DN_W   = 3'd5, // wait; on done take the new C; the node after D is addressed
+                     S_NEXT   = 3'd6; // write C, slide the window (node 0 addressed after the last node)
+
+    // Node 1 and node 2 as (unit, node) addresses.
+    localparam integer N1_U_I = K > 1 ? 0 : 1;
+    localparam integer N1_N_I = K > 1 ? 1 : 0;
+    localparam integer N2_U_I = K > 2 ? 0 : K == 2 ? 1 : 2;
+    localparam integer N2_N_I = K > 2 ? 2 : 0;
+    localparam [UW-1:0] N1_U = N1_U_I[UW-1:0];
+    localparam [IW-1:0] N1_N = N1_N_I[IW-1:0];
+    localparam [UW-1:0] N2_U = N2_U_I[UW-1:0];
+    localparam [IW-1:0] N2_N = N2_N_I[IW-1:0];
+    localparam [CW-1:0] TWO  = 2;
+
+    // The next (unit, node) address.
+    function [UW+IW-1:0] next_node(input [UW-1:0] u, input [IW-1:0] n);
+        next_node = n == K_LAST ? {u + 1'b1, {IW{1'b0}}} : {u, n + 1'b1};
+    endfunction
+
+    // ---- registers ----
+    reg [2:0]     state_q, state_d;
+    reg [ITW-1:0] iter_q;
+    reg [W-1:0]   ux, uy, cx, cy, dx, dy;   // the window U, C, D
+    reg           c_pin, d_pin, has_u, has_d;
+    reg [W-1:0]   up_x, up_y;               // the point from U
+    reg           up_ok;
+    reg [CW-1:0]  ahead;                    // index of the node after D
+    reg [UW-1:0]  ahead_u;                  // and its address
+    reg [IW-1:0]  ahead_n;
+
+    wire last_node = counter == N_LAST;
+    wire last_iter = iter_q == ITER_LAST;
+
+    // ---- the datapath ----
+    wire         t_done, t_valid;
+    wire [W-1:0] t_x, t_y;
+    wire         t_start = state_q == S_UP || (state_q == S_UP_W && t_done);
+    wire         from_u  = state_q == S_UP;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // busy is not needed: the FSM waits for done
+    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_toward (
+        .clk(clk), .reset(reset), .start(t_start),
+        .p_x(from_u ? ux : dx), .p_y(from_u ? uy : dy), .c_x(cx), .c_y(cy), .rest_len(rest_len),
+        .busy(), .done(t_done), .t_x(t_x), .t_y(t_y), .valid(t_valid));
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // The new C, valid in S_DN_W when t_done (the point from D is t_*).
+    wire         dn_ok = has_d && t_valid;
+    wire [W-1:0] avg_x, avg_y;
+    fx_avg #(.W(W)) u_avg_x (.a(up_x), .b(t_x), .y(avg_x));
+    fx_avg #(.W(W)) u_avg_y (.a(up_y), .b(t_y), .y(avg_y));
+    wire [W-1:0] new_x = up_ok && dn_ok ? avg_x : up_ok ? up_x : dn_ok ? t_x : cx;
+    wire [W-1:0] new_y = up_ok && dn_ok ? avg_y : up_ok ? up_y : dn_ok ? t_y : cy;
+    wire         moved = (up_ok || dn_ok) && !c_pin;
+
+    // ---- storage read address: data arrives the cycle after ----
+    always @* begin
+        rd_uidx = ahead_u;
+        rd_nidx = ahead_n;
+        case (state_q)
+            S_IDLE:   begin rd_uidx = {UW{1'b0}}; rd_nidx = {IW{1'b0}}; end
+            S_LOAD_C: begin rd_uidx = N1_U;       rd_nidx = N1_N;       end
+            S_NEXT:   if (last_node) begin rd_uidx = {UW{1'b0}}; rd_nidx = {IW{1'b0}}; end
+            default:  ;
+        endcase
+    end
+
+    // ---- next state ----
+    always @* begin
+        state_d = state_q;
+        case (state_q)
+            S_IDLE:   if (start) state_d = S_LOAD_C;
+            S_LOAD_C: state_d = S_LOAD_D;
+            S_LOAD_D: state_d = S_UP;
+            S_UP:     state_d = S_UP_W;
+            S_UP_W:   if (t_done) state_d = S_DN_W;
+            S_DN_W:   if (t_done) state_d = S_NEXT;
+            S_NEXT:   state_d = !last_node ? S_UP : last_iter ? S_IDLE : S_LOAD_C;
+            default:  state_d = S_IDLE;
+        endcase
+    end
+
+    // ---- control registers ----
+    always @(posedge clk) begin
+        if (reset) begin
+            state_q <= S_IDLE;
+            iter_q  <= {ITW{1'b0}};
+            uidx    <= {UW{1'b0}};
+            nidx    <= {IW{1'b0}};
+            counter <= {CW{1'b0}};
+            done    <= 1'b0;
+            wr_en   <= 1'b0;
+        end else begin
+            state_q <= state_d;
+            done    <= state_q == S_NEXT && last_node && last_iter;
+            wr_en   <= state_q == S_DN_W && t_done && moved;
+            if (state_q == S_IDLE && start) iter_q <= {ITW{1'b0}};
+            if (state_q == S_NEXT && last_node && !last_iter) iter_q <= iter_q + 1'b1;
+            if (state_q == S_LOAD_C) begin
+                uidx    <= {UW{1'b0}};
+                nidx    <= {IW{1'b0}};
+                counter <= {CW{1'b0}};
+            end
+            if (state_q == S_NEXT) begin
+                counter <= counter + 1'b1;
+                if (!last_node) {uidx, nidx} <= next_node(uidx, nidx);
+            end
+        end
+    end
+
+    // ---- the window and the datapath registers (each written in its own state) ----
+    always @(posedge clk) begin
+        case (state_q)
+            S_LOAD_C: begin
+                cx    <= rd_x;
+                cy    <= rd_y;
+                c_pin <= rd_pinned;
+                has_u <= 1'b0;
+            end
+            S_LOAD_D: begin
+                dx      <= rd_x;
+                dy      <= rd_y;
+                d_pin   <= rd_pinned;
+                has_d   <= N > 1;
+                ahead   <= TWO;
+                ahead_u <= N2_U;
+                ahead_n <= N2_N;
+            end
+            S_UP_W: if (t_done) begin
+                up_x  <= t_x;
+                up_y  <= t_y;
+                up_ok <= has_u && t_valid;
+            end
+            S_DN_W: if (t_done) begin
+                cx <= new_x;
+                cy <= new_y;
+            end
+            S_NEXT: begin
+                ux    <= cx;
+                uy    <= cy;
+                has_u <= 1'b1;
+                cx    <= dx;
+                cy    <= dy;
+                c_pin <= d_pin;
+                has_d <= ahead < N_COUNT;
+                dx    <= rd_x;
+                dy    <= rd_y;
+                d_pin <= rd_pinned;
+                ahead <= ahead + 1'b1;
+                {ahead_u, ahead_n} <= next_node(ahead_u, ahead_n);
+            end
+            default: ;
+        endcase
+    end
+
+    // C's write: the cycle after its new position is known (S_NEXT).
+    assign wr_uidx = uidx;
+    assign wr_nidx = nidx;
+    assign wr_x    = cx;
+    assign wr_y    = cy;
+    assign fec     = counter == N_COUNT;
+
+endmodule
+
+`resetall

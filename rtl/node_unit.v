@@ -1,0 +1,267 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * node_unit - K nodes of the rope and the per-node FSM of reference 000.
+ *
+ * Holds x, y, px, py (signed Q(W-F).F) and a pinned flag for K nodes. A Verlet pass
+ * (started by verlet_start) updates node 0 .. K-1, one node per clock, each with
+ * model/engine_body.h verlet_node() and then mouse_node():
+ *     v  = x - px;  v = v - v*d (EN_DAMPING);  px = x;  x = x + v;  x = x + g h^2 (EN_GRAVITY)
+ *     mouse (EN_MOUSE, button down, |mouse - x| < box on both axes):
+ *         px.x = (mouse.x < px.x) ? x.x + a : x.x - a
+ * Every operation is a saturating fx_add/fx_mul, in the model's order. Pinned
+ * nodes are not written.
+ *
+ * Storage reads are synchronous (data the cycle after the address), with
+ * read-before-write, as a block RAM would behave: swapping in a RAM does not change
+ * the timing. Port A serves the Verlet pass and, between passes, the sequencer;
+ * port B is the external position read port.
+ *
+ * Timing (the cycle model mirrors it): verlet_start seen at edge 0 clears
+ * verlet_done and presents address 0; edges 1..K write nodes 0..K-1; verlet_done
+ * rises at edge K and stays high until the next start. Every write to this unit
+ * (Verlet, init or sequencer) shows on the write-back lane in the next cycle.
+ */
+module node_unit #(
+    parameter integer W          = 32, // word width, bits
+    parameter integer F          = 16, // fraction bits
+    parameter integer K          = 5,  // nodes held by this unit
+    parameter integer IW         = 3,  // node index width, >= clog2(K), >= 1
+    parameter [0:0]  EN_GRAVITY = 1'b1,  // add g h^2 in the Verlet step
+    parameter [0:0]  EN_DAMPING = 1'b0,  // Verlet damping v -= v * d (two multipliers)
+    parameter [0:0]  EN_MOUSE = 1'b1   // reference-000 mouse impulse
+) (
+    input  wire          clk,
+    input  wire          reset,        // synchronous, active high: all nodes at 0, unpinned
+
+    input  wire          verlet_start, // one-cycle pulse: run the pass over all K nodes
+    output wire          verlet_done,  // this unit's FV: high from the end of a pass to the next start
+
+    input  wire [W-1:0]  gdt2_x,       // g h^2, per axis
+    input  wire [W-1:0]  gdt2_y,
+    input  wire [W-1:0]  damping,      // d, 0 <= d < 1
+    input  wire [W-1:0]  impulse,      // a
+    input  wire [W-1:0]  box_x,        // in-touch half-widths
+    input  wire [W-1:0]  box_y,
+    input  wire [W-1:0]  mouse_x,      // the pointer, sampled at the frame start
+    input  wire [W-1:0]  mouse_y,
+    input  wire          mouse_down,
+
+    // port A between passes: the sequencer's reads, the sequencer's and init's writes
+    input  wire [IW-1:0] a_idx,        // node to read; x, y, pinned appear next cycle
+    output wire [W-1:0]  a_x,
+    output wire [W-1:0]  a_y,
+    output wire          a_pinned,
+    input  wire          w_en,         // write node w_idx
+    input  wire [IW-1:0] w_idx,
+    input  wire [W-1:0]  w_x,
+    input  wire [W-1:0]  w_y,
+    input  wire          w_at_rest,    // also set px, py = x, y (the init walk)
+    input  wire          pin_en,       // pin node pin_idx
+    input  wire [IW-1:0] pin_idx,
+
+    // port B: external position reads
+    input  wire [IW-1:0] b_idx,
+    output reg  [W-1:0]  b_x,
+    output reg  [W-1:0]  b_y,
+
+    // write-back lane: a write to this unit, shown the cycle after it happens
+    output reg           wb_valid,
+    output reg  [IW-1:0] wb_idx,
+    output reg  [W-1:0]  wb_x,
+    output reg  [W-1:0]  wb_y
+);
+
+    initial begin
+        if (K < 1) $error("node_unit: K must be >= 1 (K=%0d) in %m", K);
+        if ((1 << IW) < K) $error("node_unit: IW=%0d cannot index K=%0d nodes in %m", IW, K);
+    end
+
+    localparam integer  K_LAST_I = K - 1;
+    localparam [IW:0]   K_COUNT  = K[IW:0];           // node count, one bit wider than an index
+    localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];  // index of the last node
+
+    // ---- storage ----
+    reg [W-1:0] x_mem  [0:K-1];
+    reg [W-1:0] y_mem  [0:K-1];
+    reg [W-1:0] px_mem [0:K-1];
+    reg [W-1:0] py_mem [0:K-1];
+    reg [K-1:0] pinned_q;
+
+    // ---- the pass FSM ----
+    reg          running_q, running_d;  // a pass is under way
+    reg          done_q, done_d;        // FV
+    reg [IW-1:0] vidx_q, vidx_d;        // node whose data port A returns this cycle
+
+    wire last = vidx_q == K_LAST;
+
+    always @* begin
+        running_d = running_q;
+        done_d    = done_q;
+        vidx_d    = vidx_q;
+        if (verlet_start) begin
+            running_d = 1'b1;
+            done_d    = 1'b0;
+            vidx_d    = {IW{1'b0}};
+        end else if (running_q) begin
+            vidx_d = vidx_q + 1'b1;
+            if (last) begin
+                running_d = 1'b0;
+                done_d    = 1'b1;
+            end
+        end
+    end
+
+    always @(posedge clk) begin
+        if (reset) begin
+            running_q <= 1'b0;
+            done_q    <= 1'b0;
+            vidx_q    <= {IW{1'b0}};
+        end else begin
+            running_q <= running_d;
+            done_q    <= done_d;
+            vidx_q    <= vidx_d;
+        end
+    end
+
+    assign verlet_done = done_q;
+
+    // ---- port A: synchronous read ----
+    // During a pass the address runs ahead of vidx by one: node vidx+1 is read
+    // while node vidx is written.
+    wire [IW-1:0] a_addr = verlet_start ? {IW{1'b0}} : running_q ? vidx_q + 1'b1 : a_idx;
+    reg  [W-1:0]  q_x, q_y, q_px, q_py;
+    reg           q_pin;
+
+    always @(posedge clk) begin
+        if ({1'b0, a_addr} < K_COUNT) begin
+            q_x   <= x_mem[a_addr];
+            q_y   <= y_mem[a_addr];
+            q_px  <= px_mem[a_addr];
+            q_py  <= py_mem[a_addr];
+            q_pin <= pinned_q[a_addr];
+        end
+    end
+
+    assign a_x      = q_x;
+    assign a_y      = q_y;
+    assign a_pinned = q_pin;
+
+    // ---- the Verlet step of one node, from port A's data ----
+    // The per-adder saturation flags are not used: saturation is the result itself.
+    /* verilator lint_off PINCONNECTEMPTY */
+    wire [W-1:0] vx, vy, vx_d, vy_d, x1, y1, nx, ny;
+    fx_add #(.W(W)) u_vx (.sub(1'b1), .a(q_x), .b(q_px), .y(vx), .sat());
+    fx_add #(.W(W)) u_vy (.sub(1'b1), .a(q_y), .b(q_py), .y(vy), .sat());
+
+    generate
+        if (EN_DAMPING) begin : g_damping
+            wire [W-1:0] dvx, dvy;
+            fx_mul #(.W(W), .F(F)) u_dvx (.a(vx), .b(damping), .y(dvx), .sat(), .prod());
+            fx_mul #(.W(W), .F(F)) u_dvy (.a(vy), .b(damping), .y(dvy), .sat(), .prod());
+            fx_add #(.W(W)) u_vxd (.sub(1'b1), .a(vx), .b(dvx), .y(vx_d), .sat());
+            fx_add #(.W(W)) u_vyd (.sub(1'b1), .a(vy), .b(dvy), .y(vy_d), .sat());
+        end else begin : g_no_damping
+            assign vx_d = vx;
+            assign vy_d = vy;
+            wire unused_damping = &{1'b0, damping};
+        end
+    endgenerate
+
+    fx_add #(.W(W)) u_x1 (.sub(1'b0), .a(q_x), .b(vx_d), .y(x1), .sat());
+    fx_add #(.W(W)) u_y1 (.sub(1'b0), .a(q_y), .b(vy_d), .y(y1), .sat());
+
+    generate
+        if (EN_GRAVITY) begin : g_gravity
+            fx_add #(.W(W)) u_gx (.sub(1'b0), .a(x1), .b(gdt2_x), .y(nx), .sat());
+            fx_add #(.W(W)) u_gy (.sub(1'b0), .a(y1), .b(gdt2_y), .y(ny), .sat());
+        end else begin : g_no_gravity
+            assign nx = x1;
+            assign ny = y1;
+            wire unused_gravity = &{1'b0, gdt2_x, gdt2_y};
+        end
+    endgenerate
+
+    // ---- the mouse impulse, after the Verlet step (px is now the old x) ----
+    wire [W-1:0] npx;
+    generate
+        if (EN_MOUSE) begin : g_mouse
+            wire [W-1:0] ddx, ddy, ndx, ndy, px_plus, px_minus;
+            fx_add #(.W(W)) u_ddx (.sub(1'b1), .a(mouse_x), .b(nx), .y(ddx), .sat());
+            fx_add #(.W(W)) u_ddy (.sub(1'b1), .a(mouse_y), .b(ny), .y(ddy), .sat());
+            // |d| saturates: |min| is max, as fx_neg
+            fx_add #(.W(W)) u_ndx (.sub(1'b1), .a({W{1'b0}}), .b(ddx), .y(ndx), .sat());
+            fx_add #(.W(W)) u_ndy (.sub(1'b1), .a({W{1'b0}}), .b(ddy), .y(ndy), .sat());
+            wire [W-1:0] adx = ddx[W-1] ? ndx : ddx;
+            wire [W-1:0] ady = ddy[W-1] ? ndy : ddy;
+            wire in_touch = mouse_down && ($signed(adx) < $signed(box_x)) && ($signed(ady) < $signed(box_y));
+            fx_add #(.W(W)) u_pp (.sub(1'b0), .a(nx), .b(impulse), .y(px_plus), .sat());
+            fx_add #(.W(W)) u_pm (.sub(1'b1), .a(nx), .b(impulse), .y(px_minus), .sat());
+            assign npx = !in_touch ? q_x : ($signed(mouse_x) < $signed(q_x)) ? px_plus : px_minus;
+        end else begin : g_no_mouse
+            assign npx = q_x;
+            wire unused_mouse = &{1'b0, impulse, box_x, box_y, mouse_x, mouse_y, mouse_down};
+        end
+    endgenerate
+
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // ---- writes: the pass, else port A's writer; pins ----
+    wire          pass_we = running_q && !q_pin;
+    wire          we      = pass_we || w_en;
+    wire [IW-1:0] widx    = running_q ? vidx_q : w_idx;
+    wire [W-1:0]  wx      = running_q ? nx : w_x;
+    wire [W-1:0]  wy      = running_q ? ny : w_y;
+    wire [W-1:0]  wpx     = running_q ? npx : w_x;
+    wire [W-1:0]  wpy     = running_q ? q_y : w_y;
+    wire          wprev   = running_q || w_at_rest;
+
+    integer i;
+    always @(posedge clk) begin
+        if (reset) begin
+            for (i = 0; i < K; i = i + 1) begin
+                x_mem[i]  <= {W{1'b0}};
+                y_mem[i]  <= {W{1'b0}};
+                px_mem[i] <= {W{1'b0}};
+                py_mem[i] <= {W{1'b0}};
+            end
+        end else if (we && {1'b0, widx} < K_COUNT) begin
+            x_mem[widx] <= wx;
+            y_mem[widx] <= wy;
+            if (wprev) begin
+                px_mem[widx] <= wpx;
+                py_mem[widx] <= wpy;
+            end
+        end
+    end
+
+    always @(posedge clk) begin
+        if (reset) pinned_q <= {K{1'b0}};
+        else if (pin_en && {1'b0, pin_idx} < K_COUNT) pinned_q[pin_idx] <= 1'b1;
+    end
+
+    // ---- port B and the write-back lane ----
+    always @(posedge clk) begin
+        if (reset) begin
+            b_x      <= {W{1'b0}};
+            b_y      <= {W{1'b0}};
+            wb_valid <= 1'b0;
+            wb_idx   <= {IW{1'b0}};
+            wb_x     <= {W{1'b0}};
+            wb_y     <= {W{1'b0}};
+        end else begin
+            if ({1'b0, b_idx} < K_COUNT) begin
+                b_x <= x_mem[b_idx];
+                b_y <= y_mem[b_idx];
+            end
+            wb_valid <= we && {1'b0, widx} < K_COUNT;
+            wb_idx   <= widx;
+            wb_x     <= wx;
+            wb_y     <= wy;
+        end
+    end
+
+endmodule
+
+`resetall

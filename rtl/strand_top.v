@@ -1,0 +1,285 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_regs.vh"
+
+/*
+ * strand_top - the reference-000 rope engine: M node units of K nodes and a
+ * constraint sequencer (design.md section 4).
+ *
+ * A frame (on `step`, when idle): the mouse is sampled; then SUBSTEPS times: every
+ * unit runs its Verlet (+ mouse) pass over its K nodes at once, FV rising when all
+ * are done; then the sequencer runs ITER centred-rule passes over all M x K nodes,
+ * FEC rising as each pass ends. frame_done pulses for one cycle at the end.
+ *
+ * Nodes are addressed as {unit, node} (UW + IW bits); that is the format of rd_addr,
+ * of a PIN write's data, and, per unit lane, of the write-back bus.
+ *
+ * Registers (cfg_we/cfg_addr/cfg_data; addresses in the generated strand_regs.vh)
+ * reset to 0. After reset: write the constants and pins, then CMD = 1 lays the
+ * nodes out (phase INIT, N cycles), then pulse step once per frame.
+ *
+ * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN. Every phase takes a number of
+ * cycles fixed by the parameters (docs/architecture.md gives the formula).
+ */
+module strand_top #(
+    parameter integer W              = 32,    // word width, bits (8..32)
+    parameter integer F              = 16,    // fraction bits (1..W-2)
+    parameter integer M              = 4,     // node units
+    parameter integer K              = 5,     // nodes per unit
+    parameter integer SQRT_BITS      = W - 1, // square-root bits resolved (1..W-1)
+    parameter integer DIV_BITS       = W - 1, // quotient bits resolved (1..W-1)
+    parameter integer ITER           = 1,     // constraint passes per substep
+    parameter integer SUBSTEPS       = 1,     // substeps per frame
+    parameter [0:0]   EN_GRAVITY     = 1'b1,  // add g h^2
+    parameter [0:0]   EN_DAMPING     = 1'b0,  // Verlet damping
+    parameter [0:0]   EN_MOUSE       = 1'b1,  // mouse impulse
+    parameter [0:0]   EN_CONSTRAINTS = 1'b1,  // the centred rule
+    // derived widths (leave at their defaults)
+    parameter integer UW             = M > 1 ? $clog2(M) : 1,         // unit index
+    parameter integer IW             = K > 1 ? $clog2(K) : 1,         // node index within a unit
+    parameter integer CW             = $clog2(M * K + 1),             // node counter
+    parameter integer SW             = SUBSTEPS > 1 ? $clog2(SUBSTEPS) : 1
+) (
+    input  wire            clk,
+    input  wire            reset,       // synchronous, active high
+
+    input  wire [W-1:0]    mouse_x,     // sampled when a frame starts
+    input  wire [W-1:0]    mouse_y,
+    input  wire            mouse_down,
+
+    input  wire            step,        // start a frame (when phase is IDLE)
+    output reg             frame_done,  // one-cycle pulse: the frame is finished
+
+    input  wire            cfg_we,      // register write port
+    input  wire [`STRAND_REG_ADDR_BITS-1:0] cfg_addr,
+    input  wire [W-1:0]    cfg_data,
+
+    input  wire [UW+IW-1:0] rd_addr,    // position read port: {unit, node} in,
+    output wire [W-1:0]    rd_x,        // its position the next cycle
+    output wire [W-1:0]    rd_y,
+
+    output reg  [1:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain
+    output wire            fv,          // every unit finished its Verlet pass
+    output wire            fec,         // the constraint pass finished (counter = M x K)
+    output wire [UW-1:0]   uidx,        // the sequencer's C: unit
+    output wire [IW-1:0]   nidx,        //                    node
+    output wire [CW-1:0]   counter,     // nodes finished in this pass
+
+    output wire [M-1:0]    wb_valid,    // per unit: a node of this unit was written
+    output wire [M*IW-1:0] wb_idx,      //   its index in the unit
+    output wire [M*W-1:0]  wb_x,        //   its new position
+    output wire [M*W-1:0]  wb_y
+);
+
+    localparam integer N = M * K;
+
+    initial begin
+        if (W < 8 || W > 32) $error("strand_top: W must be 8..32 (W=%0d) in %m", W);
+        if (F < 1 || F > W - 2) $error("strand_top: F must be 1..W-2 (F=%0d) in %m", F);
+        if (M < 1 || K < 1) $error("strand_top: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
+        if (SQRT_BITS < 1 || SQRT_BITS > W - 1) $error("strand_top: SQRT_BITS must be 1..W-1 in %m");
+        if (DIV_BITS < 1 || DIV_BITS > W - 1) $error("strand_top: DIV_BITS must be 1..W-1 in %m");
+        if (ITER < 1 || SUBSTEPS < 1) $error("strand_top: ITER and SUBSTEPS must be >= 1 in %m");
+        if (UW + IW > W) $error("strand_top: a {unit, node} address (%0d bits) must fit W=%0d in %m", UW + IW, W);
+    end
+
+    localparam [1:0] PH_IDLE = 2'd0, PH_INIT = 2'd1, PH_VERLET = 2'd2, PH_CONSTRAIN = 2'd3;
+
+    localparam integer K_LAST_I = K - 1;
+    localparam integer N_LAST_I = N - 1;
+    localparam integer SUB_LAST_I = SUBSTEPS - 1;
+    localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];
+    localparam [CW-1:0] N_LAST   = N_LAST_I[CW-1:0];
+    localparam [SW-1:0] SUB_LAST = SUB_LAST_I[SW-1:0];
+
+    // ---- run-time registers ----
+    reg [W-1:0] gdt2_x, gdt2_y, rest_len, impulse, box_x, box_y, damping;
+    reg [W-1:0] start_x, start_y, step_x, step_y;
+
+    wire cmd_init = cfg_we && cfg_addr == `STRAND_REG_CMD && cfg_data[0];
+    wire pin_we   = cfg_we && cfg_addr == `STRAND_REG_PIN;
+
+    always @(posedge clk) begin
+        if (reset) begin
+            gdt2_x <= {W{1'b0}}; gdt2_y <= {W{1'b0}}; rest_len <= {W{1'b0}}; impulse <= {W{1'b0}};
+            box_x <= {W{1'b0}}; box_y <= {W{1'b0}}; damping <= {W{1'b0}};
+            start_x <= {W{1'b0}}; start_y <= {W{1'b0}}; step_x <= {W{1'b0}}; step_y <= {W{1'b0}};
+        end else if (cfg_we) begin
+            case (cfg_addr)
+                `STRAND_REG_GDT2_X:  gdt2_x   <= cfg_data;
+                `STRAND_REG_GDT2_Y:  gdt2_y   <= cfg_data;
+                `STRAND_REG_DIST:    rest_len <= cfg_data;
+                `STRAND_REG_IMPULSE: impulse  <= cfg_data;
+                `STRAND_REG_BOX_X:   box_x    <= cfg_data;
+                `STRAND_REG_BOX_Y:   box_y    <= cfg_data;
+                `STRAND_REG_DAMPING: damping  <= cfg_data;
+                `STRAND_REG_START_X: start_x  <= cfg_data;
+                `STRAND_REG_START_Y: start_y  <= cfg_data;
+                `STRAND_REG_STEP_X:  step_x   <= cfg_data;
+                `STRAND_REG_STEP_Y:  step_y   <= cfg_data;
+                default: ;
+            endcase
+        end
+    end
+
+    // ---- the frame FSM ----
+    reg  [SW-1:0] substep_q;
+    reg  [W-1:0]  mouse_x_q, mouse_y_q;
+    reg           mouse_down_q;
+    reg  [UW-1:0] init_u;      // the init walk: node being laid out
+    reg  [IW-1:0] init_n;
+    reg  [CW-1:0] init_count;
+    reg  [W-1:0]  init_x, init_y;
+    wire [W-1:0]  init_x_next, init_y_next;
+    wire          seq_done;
+
+    wire frame_start   = phase == PH_IDLE && !cmd_init && step;
+    wire verlet_end    = phase == PH_VERLET && fv;
+    wire substep_end   = (verlet_end && !EN_CONSTRAINTS) || (phase == PH_CONSTRAIN && seq_done);
+    wire verlet_start  = frame_start || (substep_end && substep_q != SUB_LAST);
+    wire seq_start     = verlet_end && EN_CONSTRAINTS;
+    wire init_last     = init_count == N_LAST;
+
+    /* verilator lint_off PINCONNECTEMPTY */
+    // saturation flags are not needed: the saturated value is the result
+    fx_add #(.W(W)) u_init_x (.sub(1'b0), .a(init_x), .b(step_x), .y(init_x_next), .sat());
+    fx_add #(.W(W)) u_init_y (.sub(1'b0), .a(init_y), .b(step_y), .y(init_y_next), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    always @(posedge clk) begin
+        frame_done <= 1'b0;
+        if (reset) begin
+            phase        <= PH_IDLE;
+            substep_q    <= {SW{1'b0}};
+            mouse_x_q    <= {W{1'b0}};
+            mouse_y_q    <= {W{1'b0}};
+            mouse_down_q <= 1'b0;
+            init_u       <= {UW{1'b0}};
+            init_n       <= {IW{1'b0}};
+            init_count   <= {CW{1'b0}};
+            init_x       <= {W{1'b0}};
+            init_y       <= {W{1'b0}};
+            frame_done   <= 1'b0;
+        end else begin
+            case (phase)
+                PH_IDLE: begin
+                    if (cmd_init) begin
+                        phase      <= PH_INIT;
+                        init_u     <= {UW{1'b0}};
+                        init_n     <= {IW{1'b0}};
+                        init_count <= {CW{1'b0}};
+                        init_x     <= start_x;
+                        init_y     <= start_y;
+                    end else if (step) begin
+                        phase        <= PH_VERLET;
+                        substep_q    <= {SW{1'b0}};
+                        mouse_x_q    <= mouse_x;
+                        mouse_y_q    <= mouse_y;
+                        mouse_down_q <= mouse_down;
+                    end
+                end
+                PH_INIT: begin
+                    init_x     <= init_x_next;
+                    init_y     <= init_y_next;
+                    init_count <= init_count + 1'b1;
+                    if (init_n == K_LAST) begin
+                        init_n <= {IW{1'b0}};
+                        init_u <= init_u + 1'b1;
+                    end else begin
+                        init_n <= init_n + 1'b1;
+                    end
+                    if (init_last) phase <= PH_IDLE;
+                end
+                PH_VERLET:    if (seq_start) phase <= PH_CONSTRAIN;
+                default:      ;
+            endcase
+            if (substep_end) begin
+                if (substep_q == SUB_LAST) begin
+                    phase      <= PH_IDLE;
+                    frame_done <= 1'b1;
+                end else begin
+                    phase     <= PH_VERLET;
+                    substep_q <= substep_q + 1'b1;
+                end
+            end
+        end
+    end
+
+    // ---- the sequencer ----
+    wire [UW-1:0] seq_rd_u, seq_wr_u;
+    wire [IW-1:0] seq_rd_n, seq_wr_n;
+    wire          seq_wr_en;
+    wire [W-1:0]  seq_wr_x, seq_wr_y;
+    wire [M*W-1:0] a_x_all, a_y_all;
+    wire [M-1:0]  a_pin_all, done_all;
+    reg  [UW-1:0] rd_sel_q;  // unit whose port-A data the sequencer sees
+    wire [W-1:0]  seq_rd_x = a_x_all[rd_sel_q * W +: W];
+    wire [W-1:0]  seq_rd_y = a_y_all[rd_sel_q * W +: W];
+    wire          seq_rd_pin = a_pin_all[rd_sel_q];
+
+    always @(posedge clk) rd_sel_q <= seq_rd_u;
+
+    generate
+        if (EN_CONSTRAINTS) begin : g_constraints
+            chain_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
+                              .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_seq (
+                .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
+                .rd_uidx(seq_rd_u), .rd_nidx(seq_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
+                .wr_en(seq_wr_en), .wr_uidx(seq_wr_u), .wr_nidx(seq_wr_n), .wr_x(seq_wr_x), .wr_y(seq_wr_y),
+                .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec));
+        end else begin : g_no_constraints
+            assign seq_done = 1'b0;
+            assign seq_rd_u = {UW{1'b0}};
+            assign seq_rd_n = {IW{1'b0}};
+            assign seq_wr_en = 1'b0;
+            assign seq_wr_u = {UW{1'b0}};
+            assign seq_wr_n = {IW{1'b0}};
+            assign seq_wr_x = {W{1'b0}};
+            assign seq_wr_y = {W{1'b0}};
+            assign uidx = {UW{1'b0}};
+            assign nidx = {IW{1'b0}};
+            assign counter = {CW{1'b0}};
+            assign fec = 1'b0;
+            wire unused_seq = &{1'b0, seq_rd_x, seq_rd_y, seq_rd_pin, rest_len};
+        end
+    endgenerate
+
+    // ---- the units ----
+    wire [UW-1:0] rd_u = rd_addr[UW+IW-1:IW];
+    wire [IW-1:0] rd_n = rd_addr[IW-1:0];
+    reg  [UW-1:0] rd_u_q;
+    wire [M*W-1:0] b_x_all, b_y_all;
+    always @(posedge clk) rd_u_q <= rd_u;
+    assign rd_x = b_x_all[rd_u_q * W +: W];
+    assign rd_y = b_y_all[rd_u_q * W +: W];
+
+    wire [UW-1:0] pin_u = cfg_data[UW+IW-1:IW];
+    wire [IW-1:0] pin_n = cfg_data[IW-1:0];
+
+    genvar u;
+    generate
+        for (u = 0; u < M; u = u + 1) begin : g_unit
+            localparam [UW-1:0] U_ID = u;
+            wire init_we = phase == PH_INIT && init_u == U_ID;
+            wire seq_we  = seq_wr_en && seq_wr_u == U_ID;
+            node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
+                        .EN_MOUSE(EN_MOUSE)) u_unit (
+                .clk(clk), .reset(reset),
+                .verlet_start(verlet_start), .verlet_done(done_all[u]),
+                .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .damping(damping), .impulse(impulse),
+                .box_x(box_x), .box_y(box_y), .mouse_x(mouse_x_q), .mouse_y(mouse_y_q), .mouse_down(mouse_down_q),
+                .a_idx(seq_rd_n), .a_x(a_x_all[u*W +: W]), .a_y(a_y_all[u*W +: W]), .a_pinned(a_pin_all[u]),
+                .w_en(init_we || seq_we), .w_idx(init_we ? init_n : seq_wr_n),
+                .w_x(init_we ? init_x : seq_wr_x), .w_y(init_we ? init_y : seq_wr_y), .w_at_rest(init_we),
+                .pin_en(pin_we && pin_u == U_ID), .pin_idx(pin_n),
+                .b_idx(rd_n), .b_x(b_x_all[u*W +: W]), .b_y(b_y_all[u*W +: W]),
+                .wb_valid(wb_valid[u]), .wb_idx(wb_idx[u*IW +: IW]), .wb_x(wb_x[u*W +: W]), .wb_y(wb_y[u*W +: W]));
+        end
+    endgenerate
+
+    assign fv = &done_all;
+
+endmodule
+
+`resetall

@@ -1,0 +1,164 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * toward - the point at distance `rest_len` from P in the direction of C.
+ *
+ * Computes model/engine_body.h toward(): with d = C - P (saturating subtract),
+ *     len = fx_sqrt(d.x^2 + d.y^2)      radicand: exact 2W-bit sum of squares
+ *     r   = fx_div(rest_len, len)           rest_len / len, unsigned, Q.F
+ *     T   = P + d * r                   fx_mul (rounded ties-to-even), fx_add
+ * valid = 0 when len = 0 (the divider's divide-by-zero flag): the caller skips T.
+ *
+ * Ports: p_*, c_* signed Q(W-F).F; rest_len unsigned Q(W-F).F (> 0); t_* signed Q(W-F).F.
+ *
+ * Datapath: one W x W multiplier, shared by the two squares and the two products
+ * (its exact 2W-bit product for the squares, its rounded result for the products),
+ * one fx_sqrt and one fx_div.
+ *
+ * Timing, fixed whatever the data (the cycle model mirrors it). start seen at
+ * edge 0 captures d and P; edge 1 squares d.x; edge 2 squares d.y and starts the
+ * square root; the root is ready SQRT_BITS+1 edges later and starts the divider in
+ * the same cycle; DIV_BITS+1 edges after that the quotient is ready; the next two
+ * edges form T.x and T.y. done is high for one cycle, LATENCY = SQRT_BITS +
+ * DIV_BITS + 6 edges after edge 0; t_x, t_y, valid hold until the next result.
+ * start is accepted only when idle or in the done cycle.
+ */
+module toward #(
+    parameter integer W         = 32,    // word width, bits
+    parameter integer F         = 16,    // fraction bits
+    parameter integer SQRT_BITS = W - 1, // root bits resolved
+    parameter integer DIV_BITS  = W - 1  // quotient bits resolved
+) (
+    input  wire         clk,
+    input  wire         reset,  // synchronous, active high
+    input  wire         start,  // sample P, C and rest_len
+    input  wire [W-1:0] p_x,
+    input  wire [W-1:0] p_y,
+    input  wire [W-1:0] c_x,
+    input  wire [W-1:0] c_y,
+    input  wire [W-1:0] rest_len,
+    output wire         busy,
+    output wire         done,   // one-cycle pulse: t_x, t_y, valid are new
+    output reg  [W-1:0] t_x,
+    output reg  [W-1:0] t_y,
+    output reg          valid   // 0: zero length, no direction
+);
+
+    initial begin
+        if (W < 8 || W > 32) $error("toward: W must be 8..32 (W=%0d) in %m", W);
+    end
+
+    localparam [2:0] S_IDLE = 3'd0, // waiting for start
+                     S_SQX  = 3'd1, // square d.x
+                     S_SQY  = 3'd2, // square d.y, start the root
+                     S_SQRT = 3'd3, // wait for the root, then start the divider
+                     S_DIV  = 3'd4, // wait for the quotient
+                     S_MX   = 3'd5, // T.x = P.x + d.x * r
+                     S_MY   = 3'd6; // T.y = P.y + d.y * r
+
+    reg [2:0]     state_q, state_d;
+    reg           done_q, done_d;
+    reg [W-1:0]   dx_q, dy_q, px_q, py_q, rest_q, r_q;
+    reg           dz_q;
+    reg [2*W-1:0] sq_q;   // d.x^2
+
+    // ---- the shared multiplier ----
+    reg  [W-1:0]   mul_a, mul_b;
+    wire [W-1:0]   mul_round;
+    wire [2*W-1:0] mul_exact;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // the multiplier's saturation flag is not used: saturation is the result itself
+    fx_mul #(.W(W), .F(F)) u_mul (.a(mul_a), .b(mul_b), .y(mul_round), .prod(mul_exact), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    always @* begin
+        mul_a = dx_q;
+        mul_b = dx_q;
+        case (state_q)
+            S_SQY:   begin mul_a = dy_q; mul_b = dy_q; end
+            S_MX:    begin mul_a = dx_q; mul_b = r_q;  end
+            S_MY:    begin mul_a = dy_q; mul_b = r_q;  end
+            default: ;
+        endcase
+    end
+
+    // ---- subtract, add ----
+    wire [W-1:0] dx_new, dy_new, t_sum;
+    /* verilator lint_off PINCONNECTEMPTY */
+    fx_add #(.W(W)) u_dx (.sub(1'b1), .a(c_x), .b(p_x), .y(dx_new), .sat());
+    fx_add #(.W(W)) u_dy (.sub(1'b1), .a(c_y), .b(p_y), .y(dy_new), .sat());
+    fx_add #(.W(W)) u_t  (.sub(1'b0), .a(state_q == S_MY ? py_q : px_q), .b(mul_round), .y(t_sum), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // ---- square root and divider ----
+    wire         sqrt_start = state_q == S_SQY;
+    wire [2*W-1:0] radicand = sq_q + mul_exact; // both squares are < 2^(2W-2): no overflow
+    wire         sqrt_done, div_done, div_zero;
+    wire [W-1:0] root, quot;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // busy and saturation flags are not needed: the FSM counts on the fixed latency
+    fx_sqrt #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (
+        .clk(clk), .reset(reset), .start(sqrt_start), .radicand(radicand),
+        .busy(), .done(sqrt_done), .result(root), .sat());
+    fx_div #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
+        .clk(clk), .reset(reset), .start(state_q == S_SQRT && sqrt_done), .num(rest_q), .den(root),
+        .busy(), .done(div_done), .result(quot), .div_by_zero(div_zero), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // ---- control ----
+    always @* begin
+        state_d = state_q;
+        done_d  = 1'b0;
+        case (state_q)
+            S_IDLE:  if (start) state_d = S_SQX;
+            S_SQX:   state_d = S_SQY;
+            S_SQY:   state_d = S_SQRT;
+            S_SQRT:  if (sqrt_done) state_d = S_DIV;
+            S_DIV:   if (div_done) state_d = S_MX;
+            S_MX:    state_d = S_MY;
+            S_MY:    begin state_d = S_IDLE; done_d = 1'b1; end
+            default: state_d = S_IDLE;
+        endcase
+    end
+
+    always @(posedge clk) begin
+        if (reset) begin
+            state_q <= S_IDLE;
+            done_q  <= 1'b0;
+            t_x     <= {W{1'b0}};
+            t_y     <= {W{1'b0}};
+            valid   <= 1'b0;
+        end else begin
+            state_q <= state_d;
+            done_q  <= done_d;
+            if (state_q == S_MX) t_x <= t_sum;
+            if (state_q == S_MY) begin
+                t_y   <= t_sum;
+                valid <= !dz_q;
+            end
+        end
+    end
+
+    // Datapath registers: written in their own state only, so no reset.
+    always @(posedge clk) begin
+        if (state_q == S_IDLE && start) begin
+            dx_q   <= dx_new;
+            dy_q   <= dy_new;
+            px_q   <= p_x;
+            py_q   <= p_y;
+            rest_q <= rest_len;
+        end
+        if (state_q == S_SQX) sq_q <= mul_exact;
+        if (state_q == S_DIV && div_done) begin
+            r_q  <= quot;
+            dz_q <= div_zero;
+        end
+    end
+
+    assign busy = state_q != S_IDLE;
+    assign done = done_q;
+
+endmodule
+
+`resetall
