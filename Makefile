@@ -13,9 +13,12 @@ CSTD     := -std=c11
 COPT     := -O2 -g
 DEP_CFLAGS = $(shell pkg-config --cflags inih cairo 2>/dev/null)
 DEP_LIBS   = $(shell pkg-config --libs inih cairo 2>/dev/null)
-MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel $(DEP_CFLAGS)
+GEN       := $(BUILD)/gen
+GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh
+MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel -I$(GEN) $(DEP_CFLAGS)
 
-MODEL_SRC := model/fixed.c model/scene.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c
+MODEL_SRC := model/fixed.c model/scene.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c \
+             model/hwgen.c
 MODEL_HDR := $(wildcard model/*.h)
 MODEL_OBJ := $(MODEL_SRC:model/%.c=$(BUILD)/model/%.o)
 MODEL_LIB := $(BUILD)/libstrand.a
@@ -41,9 +44,14 @@ help:
 bootstrap:
 	@scripts/bootstrap.sh
 
+# ---- generated headers: the register map, one source for C and Verilog ----
+
+$(GEN_HDRS) &: scripts/gen_regs.py
+	python3 scripts/gen_regs.py $(GEN)
+
 # ---- the C model ----
 
-$(BUILD)/model/%.o: model/%.c $(MODEL_HDR)
+$(BUILD)/model/%.o: model/%.c $(MODEL_HDR) $(GEN_HDRS)
 	@mkdir -p $(dir $@)
 	$(CC) $(MODEL_CFLAGS) -c $< -o $@
 
@@ -84,9 +92,8 @@ test-scenes: $(STRAND)
 
 # ---- lint ----
 
-lint-c:
-	@mkdir -p $(BUILD)/lint
-	@for f in $(MODEL_SRC); do $(CC) -std=c11 -pedantic $(WARN) -Imodel $(DEP_CFLAGS) -fsyntax-only $$f || exit 1; done
+lint-c: $(GEN_HDRS)
+	@for f in $(MODEL_SRC) model/strand.c; do $(CC) -std=c11 -pedantic $(WARN) -Imodel -I$(GEN) $(DEP_CFLAGS) -fsyntax-only $$f || exit 1; done
 	@echo "lint-c: clean (-std=c11 -pedantic -Wall -Wextra -Werror)"
 
 lint: lint-c $(if $(wildcard tb/units.mk),lint-units)

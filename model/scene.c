@@ -15,6 +15,7 @@
 #include <string.h>
 
 enum { S_SCENE, S_FORMAT, S_TIME, S_CHAIN, S_GRAPH, S_GRAVITY, S_MOUSE, S_CONSTRAINTS, S_SPRINGS, S_GROUND, S_COUNT };
+_Static_assert(S_COUNT == sizeof(((scene *)0)->section_lines) / sizeof(int), "one line slot per section");
 static const char *const section_names[S_COUNT] = {
     "scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground",
 };
@@ -744,6 +745,7 @@ bool scene_load(scene *sc, const char *path, char *err)
         fail_at(&p, 1, "cannot read the scene file");
     }
     if (!p.err_line) finish(&p);
+    memcpy(sc->section_lines, p.section_line, sizeof sc->section_lines);
 
     free(p.node_values);
     free(p.offsets);
@@ -810,6 +812,12 @@ const char *scene_check_format(const scene *sc, const fx_format *fmt, char *buf,
     if (sc->en_ground) CHECK(sc->ground_level + sc->ground_sign * sc->ground_radius, "the ground boundary");
 #undef CHECK
     return NULL;
+}
+
+int scene_section_line(const scene *sc, const char *section)
+{
+    int i = section_index(section);
+    return i >= 0 && sc->section_lines[i] ? sc->section_lines[i] : 1;
 }
 
 void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down)

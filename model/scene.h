@@ -87,6 +87,8 @@ typedef struct {
     int ground_axis;  /* 0, 1, 2 */
     int ground_sign;  /* +1: nodes stay at coordinate >= level + radius; -1: <= level - radius */
     double ground_level, ground_radius, ground_friction;
+
+    int section_lines[10]; /* line of each section header, 0 if absent (scene_section_line) */
 } scene;
 
 /*
@@ -104,6 +106,9 @@ const char *scene_effects_string(const scene *sc, char *buf, size_t len);
 
 /* Does every scene value fit the format? Returns NULL or a message naming the value. */
 const char *scene_check_format(const scene *sc, const fx_format *fmt, char *buf, size_t len);
+
+/* Line of a section's header ("springs", "ground", ...), or 1 if the scene has none. */
+int scene_section_line(const scene *sc, const char *section);
 
 /* Mouse state at the start of a frame: the last event with event.frame <= frame. */
 void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down);

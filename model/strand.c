@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 
 #include "engine.h"
+#include "hwgen.h"
 #include "render.h"
 #include "scene.h"
 
@@ -28,6 +29,8 @@ static const char *usage_main =
     "  check SCENE      validate a scene and print a one-line summary\n"
     "  run SCENE        run a scene and print frames, stretch, energy and drift\n"
     "  compare SCENE    run fixed point and double side by side and print the error\n"
+    "  hwgen SCENE DIR  write the RTL parameters, setup writes, mouse script and expected\n"
+    "                   positions of a scene into DIR (for the testbenches)\n"
     "\n"
     "'strand COMMAND --help' describes each command's options.\n";
 
@@ -46,6 +49,10 @@ static const char *usage_run =
 static const char *usage_compare = "usage: strand compare SCENE [--frames N]\n"
                                    "Run the scene in fixed point and in double; print the RMS and largest position\n"
                                    "error (in rest lengths) and the largest stretch of each.\n";
+
+static const char *usage_hwgen = "usage: strand hwgen SCENE DIR [--frames N]\n"
+                                 "Write DIR/params.vh, config.hex, mouse.hex and expected.hex: what the RTL build\n"
+                                 "and its frame-level testbench need for SCENE. Exit 2 if the RTL cannot run SCENE.\n";
 
 static int bad_arg(const char *cmd, const char *fmt, const char *what)
 {
@@ -357,6 +364,39 @@ static int cmd_compare(int argc, char **argv)
     return isfinite(worst) ? 0 : 1;
 }
 
+static int cmd_hwgen(int argc, char **argv)
+{
+    options o;
+    int rc = 0;
+    scene sc;
+    char err[SCENE_ERR_LEN];
+    const char *path, *dir;
+    if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
+        fputs(usage_hwgen, stdout);
+        return 0;
+    }
+    if (argc < 3) return bad_arg("hwgen", "%s", "needs SCENE and DIR");
+    dir = argv[argc - 1];
+    path = parse_options("hwgen", argc - 1, argv, &o, "f", &rc);
+    if (!path) {
+        if (o.help) fputs(usage_hwgen, stdout);
+        return rc;
+    }
+    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (hw_check(&sc, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        scene_free(&sc);
+        return EXIT_BAD_INPUT;
+    }
+    if (!hw_export(&sc, dir, o.frames >= 0 ? o.frames : sc.frames, err, sizeof err)) {
+        fprintf(stderr, "strand hwgen: %s\n", err);
+        scene_free(&sc);
+        return 1;
+    }
+    scene_free(&sc);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -366,6 +406,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "check")) return cmd_check(argc - 1, argv + 1);
     if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compare")) return cmd_compare(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "hwgen")) return cmd_hwgen(argc - 1, argv + 1);
     fprintf(stderr, "strand: unknown command '%s'\n%s", argv[1], usage_main);
     return EXIT_BAD_INPUT;
 }

@@ -14,7 +14,7 @@
  * FEC = (counter == N). The pass repeats ITER times.
  *
  * Every node takes the same number of cycles, pinned, end or zero length alike,
- * so a pass takes 2 + N * (2 * (LT + 1) + 1) cycles from `start`, LT being
+ * so a pass takes 2 + N * (2 * LT + 2) cycles after the start cycle, LT being
  * toward's latency (docs/architecture.md derives it).
  *
  * Storage is read through the units' synchronous port A: rd_* address this cycle,
@@ -211,7 +211,7 @@ module chain_sequencer #(
                 up_y  <= t_y;
                 up_ok <= has_u && t_valid;
             end
-            S_DN_W: if (t_done) begin
+            S_DN_W: if (t_done && moved) begin  // a pinned C stays where it is, in the window too
                 cx <= new_x;
                 cy <= new_y;
             end

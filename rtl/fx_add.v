@@ -28,7 +28,10 @@ module fx_add #(
 );
 
     initial begin
-        if (W < 8 || W > 32) $error("fx_add: W must be 8..32 (W=%0d) in %m", W);
+        if (W < 8 || W > 32) begin
+            $error("fx_add: W must be 8..32 (W=%0d) in %m", W);
+            $fatal(1, "fx_add: bad parameters in %m");
+        end
     end
 
     wire [W:0] a_ext = {a[W-1], a};

@@ -27,7 +27,10 @@ module fx_avg #(
 );
 
     initial begin
-        if (W < 8 || W > 32) $error("fx_avg: W must be 8..32 (W=%0d) in %m", W);
+        if (W < 8 || W > 32) begin
+            $error("fx_avg: W must be 8..32 (W=%0d) in %m", W);
+            $fatal(1, "fx_avg: bad parameters in %m");
+        end
     end
 
     wire [W:0]   s = {a[W-1], a} + {b[W-1], b}; // exact sum

@@ -65,16 +65,23 @@ module fx_div #(
     output wire         sat          // den != 0, quotient clamped to 2^(W-1)-1
 );
 
+    // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses
+    // the $error). FS and DB are clamped copies of F and DIV_BITS so that
+    // elaboration gets as far as reporting them.
     initial begin
         if (W < 8 || W > 32) $error("fx_div: W must be 8..32 (W=%0d) in %m", W);
         if (F < 1 || F > W - 2) $error("fx_div: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F);
         if (DIV_BITS < 1 || DIV_BITS > W - 1)
             $error("fx_div: DIV_BITS must be 1..W-1 (W=%0d DIV_BITS=%0d) in %m", W, DIV_BITS);
+        if (W < 8 || W > 32 || F < 1 || F > W - 2 || DIV_BITS < 1 || DIV_BITS > W - 1)
+            $fatal(1, "fx_div: bad parameters in %m");
     end
 
     localparam integer M        = W - 1;               // magnitude bits of the quotient
-    localparam integer NIT      = DIV_BITS + 1;        // iterations per operation
-    localparam integer LSB      = M - DIV_BITS;        // weight of the last resolved bit
+    localparam integer FS       = (F < 1) ? 1 : (F > W - 2) ? W - 2 : F; // F, clamped
+    localparam integer DB       = (DIV_BITS < 1) ? 1 : (DIV_BITS > M) ? M : DIV_BITS; // DIV_BITS, clamped
+    localparam integer NIT      = DB + 1;              // iterations per operation
+    localparam integer LSB      = M - DB;              // weight of the last resolved bit
     localparam integer XB       = (NIT < M) ? NIT : M; // dividend bits fed in
     localparam integer CW       = $clog2(NIT);         // iteration counter width
     localparam integer CNT_LOAD = NIT - 1;             // counter value after edge 0
@@ -95,8 +102,8 @@ module fx_div #(
     reg           sat_q, sat_d;
 
     // Operand preparation at start.
-    wire [W-1:0] acc_init = num >> (M - F);             // floor(num * 2^F / 2^M)
-    wire [M-1:0] low_bits = num[M-1:0] << F;            // dividend bits M-1 .. 0
+    wire [W-1:0] acc_init = num >> (M - FS);            // floor(num * 2^F / 2^M)
+    wire [M-1:0] low_bits = num[M-1:0] << FS;           // dividend bits M-1 .. 0
 
     // One iteration (datapath, from the registers).
     wire [W:0]     t      = {acc_q, x_q[XB-1]};           // 2*acc + next bit
@@ -105,9 +112,9 @@ module fx_div #(
     wire [NIT-1:0] q_next = {q_q[NIT-2:0], ge};
 
     // Final rounding and clamping, used on the last iteration.
-    wire [DIV_BITS:0] rounded = {1'b0, q_next[NIT-1:1]} + {{DIV_BITS{1'b0}}, q_next[0]};
-    wire              clamp   = big_q | rounded[DIV_BITS];
-    wire [W-1:0]      quot    = {{(W-DIV_BITS){1'b0}}, rounded[DIV_BITS-1:0]} << LSB;
+    wire [DB:0]    rounded = {1'b0, q_next[NIT-1:1]} + {{DB{1'b0}}, q_next[0]};
+    wire           clamp   = big_q | rounded[DB];
+    wire [W-1:0]   quot    = {{(W-DB){1'b0}}, rounded[DB-1:0]} << LSB;
 
     always @* begin
         busy_d    = busy_q;

@@ -6,7 +6,8 @@
  *
  * Computes  y = sat(round(a * b / 2^F))  mirroring fx_mul() in model/fixed.h.
  *
- * Ports:   a, b, y are signed two's complement Q(W-F).F, W bits.
+ * Ports:   a, b, y are signed two's complement Q(W-F).F, W bits; prod is the
+ *          exact signed 2W-bit product a * b, before rounding.
  * Algorithm: p = a * b, the exact signed 2W-bit product (Q(2W-2F).2F).
  *          q = p >>> F is the floor of p / 2^F (2W-F bits). Of the F dropped bits,
  *          the top one is "half" (worth half an LSB) and the OR of the others is
@@ -24,11 +25,11 @@ module fx_mul #(
     parameter integer W = 32, // total width in bits, 8..32
     parameter integer F = 16  // fraction bits, 1..W-2
 ) (
-    input  wire [W-1:0] a,  // signed Q(W-F).F
-    input  wire [W-1:0] b,  // signed Q(W-F).F
-    output reg  [W-1:0] y,  // signed Q(W-F).F, rounded and saturated
-    output reg          sat, // 1 when y was clamped
-    output wire [2*W-1:0] prod // the exact 2W-bit product (sums of squares use it unrounded)
+    input  wire [W-1:0]   a,    // signed Q(W-F).F
+    input  wire [W-1:0]   b,    // signed Q(W-F).F
+    output reg  [W-1:0]   y,    // signed Q(W-F).F, rounded and saturated
+    output reg            sat,  // 1 when y was clamped
+    output wire [2*W-1:0] prod  // the exact product, signed Q(2W-2F).2F (sums of squares use it unrounded)
 );
 
     // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses

@@ -60,19 +60,25 @@ module fx_sqrt #(
     output wire           sat       // result was clamped to 2^(W-1)-1
 );
 
+    // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses
+    // the $error). SB is a clamped copy of SQRT_BITS so that elaboration gets as
+    // far as reporting it.
     initial begin
         if (W < 8 || W > 32) $error("fx_sqrt: W must be 8..32 (W=%0d) in %m", W);
         if (SQRT_BITS < 1 || SQRT_BITS > W - 1)
             $error("fx_sqrt: SQRT_BITS must be 1..W-1 (W=%0d SQRT_BITS=%0d) in %m", W, SQRT_BITS);
+        if (W < 8 || W > 32 || SQRT_BITS < 1 || SQRT_BITS > W - 1)
+            $fatal(1, "fx_sqrt: bad parameters in %m");
     end
 
     localparam integer M    = W - 1;                 // magnitude bits of the root
-    localparam integer NIT  = SQRT_BITS + 1;         // iterations per operation
-    localparam integer LSB  = M - SQRT_BITS;         // weight of the last resolved bit
+    localparam integer SB   = (SQRT_BITS < 1) ? 1 : (SQRT_BITS > M) ? M : SQRT_BITS; // clamped
+    localparam integer NIT  = SB + 1;                // iterations per operation
+    localparam integer LSB  = M - SB;                // weight of the last resolved bit
     localparam integer XB   = (NIT < M) ? NIT : M;   // radicand bit pairs consumed
     localparam integer XW   = 2 * XB;                // radicand shift register width
-    localparam integer AW   = SQRT_BITS + 1;         // stored partial remainder width
-    localparam integer TW   = SQRT_BITS + 3;         // trial comparison width
+    localparam integer AW   = SB + 1;                // stored partial remainder width
+    localparam integer TW   = SB + 3;                // trial comparison width
     localparam integer CW   = $clog2(NIT);           // iteration counter width
     localparam integer CNT_LOAD = NIT - 1;           // counter value after edge 0
 
@@ -95,9 +101,9 @@ module fx_sqrt #(
     wire [NIT-1:0] q_next = {q_q[NIT-2:0], ge};
 
     // Final rounding and clamping, used on the last iteration.
-    wire [SQRT_BITS:0] rounded = {1'b0, q_next[NIT-1:1]} + {{SQRT_BITS{1'b0}}, q_next[0]};
-    wire               clamp   = big_q | rounded[SQRT_BITS];
-    wire [W-1:0]       root    = {{(W-SQRT_BITS){1'b0}}, rounded[SQRT_BITS-1:0]} << LSB;
+    wire [SB:0]        rounded = {1'b0, q_next[NIT-1:1]} + {{SB{1'b0}}, q_next[0]};
+    wire               clamp   = big_q | rounded[SB];
+    wire [W-1:0]       root    = {{(W-SB){1'b0}}, rounded[SB-1:0]} << LSB;
     localparam [W-1:0] ROOT_MAX = {1'b0, {(W-1){1'b1}}};
 
     always @* begin

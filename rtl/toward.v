@@ -16,13 +16,13 @@
  * (its exact 2W-bit product for the squares, its rounded result for the products),
  * one fx_sqrt and one fx_div.
  *
- * Timing, fixed whatever the data (the cycle model mirrors it). start seen at
- * edge 0 captures d and P; edge 1 squares d.x; edge 2 squares d.y and starts the
- * square root; the root is ready SQRT_BITS+1 edges later and starts the divider in
- * the same cycle; DIV_BITS+1 edges after that the quotient is ready; the next two
- * edges form T.x and T.y. done is high for one cycle, LATENCY = SQRT_BITS +
- * DIV_BITS + 6 edges after edge 0; t_x, t_y, valid hold until the next result.
- * start is accepted only when idle or in the done cycle.
+ * Timing, fixed whatever the data (the cycle model mirrors it). Counting the
+ * cycle in which start is high as cycle 0: cycle 1 squares d.x; cycle 2 squares
+ * d.y and starts the square root; the root is there in cycle SQRT_BITS+4 and
+ * starts the divider in that cycle; the quotient is there DIV_BITS+2 cycles later;
+ * the next two cycles form T.x and T.y; done is high in cycle
+ * LATENCY = SQRT_BITS + DIV_BITS + 9, for one cycle. t_x, t_y, valid hold until
+ * the next result. start is accepted only when idle or in the done cycle.
  */
 module toward #(
     parameter integer W         = 32,    // word width, bits

@@ -1,0 +1,197 @@
+/* hwgen.c - export a scene for the RTL: parameters, setup writes, mouse, expected positions. */
+#define _POSIX_C_SOURCE 200809L
+#include "hwgen.h"
+
+#include <errno.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+
+#include "strand_regs.h"
+
+static int clog2(long v)
+{
+    int b = 0;
+    while ((1L << b) < v) b++;
+    return b;
+}
+
+static const char *reject(const scene *sc, const char *section, char *err, size_t len, const char *what)
+{
+    snprintf(err, len, "%s:%d: the RTL does not run %s yet", sc->path, scene_section_line(sc, section), what);
+    return err;
+}
+
+const char *hw_check(const scene *sc, char *err, size_t len)
+{
+    if (sc->body != BODY_CHAIN) return reject(sc, "graph", err, len, "graph bodies (they need the edge sequencer)");
+    if (sc->dim != 2) return reject(sc, "scene", err, len, "3D scenes");
+    if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
+    if (sc->en_springs) return reject(sc, "springs", err, len, "springs");
+    if (sc->en_ground) return reject(sc, "ground", err, len, "ground collision");
+    if (sc->en_mouse && sc->mouse != MOUSE_IMPULSE) return reject(sc, "mouse", err, len, "the grab form of the mouse");
+    if (sc->en_constraints && sc->rule != RULE_CENTRED) return reject(sc, "constraints", err, len, "the pairwise rule");
+    for (int i = 0; i < sc->n_nodes; i++)
+        for (int k = 0; k < 3; k++)
+            if (sc->prev[i][k] != sc->pos[i][k])
+                return reject(sc, "chain", err, len, "chains that start moving (the init walk lays nodes out at rest)");
+    return NULL;
+}
+
+void hw_params_of(const scene *sc, hw_params *hp)
+{
+    memset(hp, 0, sizeof *hp);
+    hp->w = sc->fmt.width;
+    hp->f = sc->fmt.frac;
+    hp->m = sc->units;
+    hp->k = sc->nodes_per_unit;
+    hp->sqrt_bits = sc->fmt.sqrt_bits;
+    hp->div_bits = sc->fmt.div_bits;
+    hp->iter = sc->iterations;
+    hp->substeps = sc->substeps;
+    hp->en_gravity = sc->en_gravity;
+    hp->en_damping = sc->damping > 0;
+    hp->en_mouse = sc->en_mouse;
+    hp->en_constraints = sc->en_constraints;
+    hp->uw = hp->m > 1 ? clog2(hp->m) : 1;
+    hp->iw = hp->k > 1 ? clog2(hp->k) : 1;
+    hp->cw = clog2((long)hp->m * hp->k + 1);
+}
+
+uint32_t hw_word(const fx_format *fmt, fx_t v)
+{
+    return (uint32_t)v & (fmt->width == 32 ? 0xffffffffu : (1u << fmt->width) - 1);
+}
+
+uint32_t hw_node_addr(const hw_params *hp, int node)
+{
+    return (uint32_t)(node / hp->k) << hp->iw | (uint32_t)(node % hp->k);
+}
+
+long hw_cycles_per_frame(const hw_params *hp)
+{
+    long toward = hp->sqrt_bits + hp->div_bits + 9;             /* toward.v: start cycle to done cycle */
+    long node = 2 * toward + 2;                                  /* two targets, then the window slides */
+    long pass = 2 + (long)hp->m * hp->k * node;                  /* load C and D, then every node */
+    long substep = hp->en_constraints ? hp->k + 2 + hp->iter * pass : hp->k + 1;
+    return hp->substeps * substep + 1;
+}
+
+int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
+{
+    const fx_format *f = &s->fmt;
+    hw_params hp;
+    int n = 0;
+    hw_params_of(sc, &hp);
+#define PUT(a, v)                                                                                                       \
+    do {                                                                                                                \
+        if (n < max) out[n] = (hw_write){(a), hw_word(f, (v))};                                                         \
+        n++;                                                                                                            \
+    } while (0)
+    PUT(STRAND_REG_GDT2_X, s->gravity[0]);
+    PUT(STRAND_REG_GDT2_Y, s->gravity[1]);
+    PUT(STRAND_REG_DIST, s->dist);
+    PUT(STRAND_REG_IMPULSE, s->impulse);
+    PUT(STRAND_REG_BOX_X, s->box[0]);
+    PUT(STRAND_REG_BOX_Y, s->box[1]);
+    PUT(STRAND_REG_DAMPING, s->damping);
+    PUT(STRAND_REG_START_X, fx_from_double(f, sc->chain_start[0]));
+    PUT(STRAND_REG_START_Y, fx_from_double(f, sc->chain_start[1]));
+    PUT(STRAND_REG_STEP_X, fx_from_double(f, sc->chain_step[0]));
+    PUT(STRAND_REG_STEP_Y, fx_from_double(f, sc->chain_step[1]));
+    for (int i = 0; i < sc->n_nodes; i++)
+        if (sc->pinned[i]) PUT(STRAND_REG_PIN, (fx_t)hw_node_addr(&hp, i));
+    PUT(STRAND_REG_CMD, 1);
+#undef PUT
+    return n;
+}
+
+/* mkdir -p */
+static bool make_dirs(const char *dir)
+{
+    char path[1024];
+    snprintf(path, sizeof path, "%s", dir);
+    for (char *q = path + 1; *q; q++)
+        if (*q == '/') {
+            *q = 0;
+            if (mkdir(path, 0777) != 0 && errno != EEXIST) return false;
+            *q = '/';
+        }
+    return mkdir(path, 0777) == 0 || errno == EEXIST;
+}
+
+static FILE *open_in(const char *dir, const char *name, char *err, size_t len)
+{
+    char path[1024];
+    FILE *f;
+    snprintf(path, sizeof path, "%s/%s", dir, name);
+    f = fopen(path, "w");
+    if (!f) snprintf(err, len, "cannot write %s: %s", path, strerror(errno));
+    return f;
+}
+
+bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t len)
+{
+    hw_params hp;
+    sim_fx s;
+    hw_write writes[4096 + 16];
+    int nw;
+    FILE *f;
+    bool ok = true;
+
+    if (hw_check(sc, err, len)) return false;
+    if (!make_dirs(dir)) {
+        snprintf(err, len, "cannot create %s: %s", dir, strerror(errno));
+        return false;
+    }
+    hw_params_of(sc, &hp);
+    if (!sim_fx_init(&s, sc, &sc->fmt)) {
+        snprintf(err, len, "out of memory");
+        return false;
+    }
+    nw = hw_setup_writes(sc, &s, writes, (int)(sizeof writes / sizeof *writes));
+    if (nw > (int)(sizeof writes / sizeof *writes)) {
+        snprintf(err, len, "%s:1: too many pinned nodes for one setup (%d writes)", sc->path, nw);
+        sim_fx_free(&s);
+        return false;
+    }
+
+    if (!(f = open_in(dir, "params.vh", err, len))) ok = false;
+    else {
+        fprintf(f, "// Generated by 'strand hwgen %s': the RTL build and the test for this scene.\n", sc->path);
+        fprintf(f, "`define STRAND_W %d\n`define STRAND_F %d\n`define STRAND_M %d\n`define STRAND_K %d\n", hp.w, hp.f, hp.m, hp.k);
+        fprintf(f, "`define STRAND_SQRT_BITS %d\n`define STRAND_DIV_BITS %d\n`define STRAND_ITER %d\n`define STRAND_SUBSTEPS %d\n",
+                hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps);
+        fprintf(f, "`define STRAND_EN_GRAVITY 1'b%d\n`define STRAND_EN_DAMPING 1'b%d\n`define STRAND_EN_MOUSE 1'b%d\n", hp.en_gravity,
+                hp.en_damping, hp.en_mouse);
+        fprintf(f, "`define STRAND_EN_CONSTRAINTS 1'b%d\n", hp.en_constraints);
+        fprintf(f, "`define STRAND_FRAMES %d\n`define STRAND_NCONFIG %d\n`define STRAND_CYCLES_PER_FRAME %ld\n", frames, nw,
+                hw_cycles_per_frame(&hp));
+        ok = fclose(f) == 0;
+    }
+    if (ok && (f = open_in(dir, "config.hex", err, len))) {
+        for (int i = 0; i < nw; i++) fprintf(f, "%02x%08x\n", writes[i].addr, (unsigned)writes[i].data);
+        ok = fclose(f) == 0;
+    } else ok = false;
+    if (ok && (f = open_in(dir, "mouse.hex", err, len))) { /* per frame: button, x, y */
+        for (int fr = 0; fr < frames; fr++) {
+            double m[3];
+            bool down;
+            scene_mouse_at(sc, fr, m, &down);
+            fprintf(f, "%x %08x %08x\n", sc->en_mouse && down, (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[0])),
+                    (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[1])));
+        }
+        ok = fclose(f) == 0;
+    } else ok = false;
+    if (ok && (f = open_in(dir, "expected.hex", err, len))) { /* per frame, per node: x, y at the frame's end */
+        for (int fr = 0; fr < frames; fr++) {
+            sim_fx_frame(&s);
+            for (int i = 0; i < sc->n_nodes; i++)
+                fprintf(f, "%08x %08x\n", (unsigned)hw_word(&s.fmt, s.pos[i][0]), (unsigned)hw_word(&s.fmt, s.pos[i][1]));
+        }
+        ok = fclose(f) == 0;
+    } else ok = false;
+    sim_fx_free(&s);
+    return ok;
+}

@@ -1,0 +1,145 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_regs.vh"
+`include "params.vh"
+
+/*
+ * tb_top_frames - strand_top against the C frame engine, frame by frame.
+ *
+ * `strand hwgen SCENE DIR` writes params.vh (the build), config.hex (the setup
+ * writes), mouse.hex (the pointer per frame) and expected.hex (every node's
+ * position at every frame end, from the fixed-point frame engine). This bench
+ * resets the top, writes the setup, then for every frame: drives the mouse,
+ * pulses step, counts the cycles to frame_done (they must equal the formula of
+ * docs/architecture.md, STRAND_CYCLES_PER_FRAME), reads every node through the
+ * read port and compares x and y bit for bit. It prints one PASS or FAIL line;
+ * a FAIL names the frame, the node, the axis and both values.
+ */
+module tb_top_frames;
+    localparam integer W = `STRAND_W;
+    localparam integer M = `STRAND_M;
+    localparam integer K = `STRAND_K;
+    localparam integer N = M * K;
+    localparam integer FRAMES = `STRAND_FRAMES;
+    localparam integer NCONFIG = `STRAND_NCONFIG;
+    localparam integer UW = M > 1 ? $clog2(M) : 1;
+    localparam integer IW = K > 1 ? $clog2(K) : 1;
+    localparam integer CW = $clog2(M * K + 1);
+    localparam integer TIMEOUT = 4 * `STRAND_CYCLES_PER_FRAME; // cycles a frame may take before we give up
+
+    reg clk = 1'b0;
+    reg reset = 1'b1;
+    reg [W-1:0] mouse_x = 0, mouse_y = 0;
+    reg mouse_down = 1'b0;
+    reg step = 1'b0;
+    reg cfg_we = 1'b0;
+    reg [`STRAND_REG_ADDR_BITS-1:0] cfg_addr = 0;
+    reg [W-1:0] cfg_data = 0;
+    reg [UW+IW-1:0] rd_addr = 0;
+    wire [W-1:0] rd_x, rd_y;
+    wire frame_done, fv, fec;
+    wire [1:0] phase;
+    wire [UW-1:0] uidx;
+    wire [IW-1:0] nidx;
+    wire [CW-1:0] counter;
+    wire [M-1:0] wb_valid;
+    wire [M*IW-1:0] wb_idx;
+    wire [M*W-1:0] wb_x, wb_y;
+
+    strand_top #(
+        .W(`STRAND_W), .F(`STRAND_F), .M(M), .K(K), .SQRT_BITS(`STRAND_SQRT_BITS), .DIV_BITS(`STRAND_DIV_BITS),
+        .ITER(`STRAND_ITER), .SUBSTEPS(`STRAND_SUBSTEPS), .EN_GRAVITY(`STRAND_EN_GRAVITY),
+        .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS)
+    ) dut (
+        .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_down(mouse_down),
+        .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
+        .rd_addr(rd_addr), .rd_x(rd_x), .rd_y(rd_y), .phase(phase), .fv(fv), .fec(fec),
+        .uidx(uidx), .nidx(nidx), .counter(counter),
+        .wb_valid(wb_valid), .wb_idx(wb_idx), .wb_x(wb_x), .wb_y(wb_y));
+
+    always #5 clk = ~clk;
+
+    reg [39:0]  config_mem [0:NCONFIG-1];
+    reg [31:0]  mouse_mem  [0:3*FRAMES-1];
+    reg [31:0]  expect_mem [0:2*N*FRAMES-1];
+
+    integer frame, node, cycles, errors;
+    reg [W-1:0] want_x, want_y;
+
+    task automatic fail(input [8*64-1:0] why);
+        begin
+            $display("FAIL tb_top_frames: %0s", why);
+            $fatal(1);
+        end
+    endtask
+
+    initial begin
+        errors = 0;
+        $readmemh("config.hex", config_mem);
+        $readmemh("mouse.hex", mouse_mem);
+        $readmemh("expected.hex", expect_mem);
+        if ($test$plusargs("trace")) begin
+            $dumpfile("tb_top_frames.fst");
+            $dumpvars(0, tb_top_frames);
+        end
+
+        repeat (3) @(posedge clk);
+        #1 reset = 1'b0;
+        // the setup: constants, pins, then CMD init
+        for (node = 0; node < NCONFIG; node = node + 1) begin
+            #1 cfg_we = 1'b1;
+            cfg_addr = config_mem[node][32 +: `STRAND_REG_ADDR_BITS];
+            cfg_data = config_mem[node][W-1:0];
+            @(posedge clk);
+        end
+        #1 cfg_we = 1'b0;
+        cycles = 0;
+        while (phase != 2'd0 || cycles == 0) begin
+            @(posedge clk);
+            cycles = cycles + 1;
+            if (cycles > N + 4) fail("the init walk did not end");
+        end
+
+        for (frame = 0; frame < FRAMES; frame = frame + 1) begin
+            #1 mouse_down = mouse_mem[3 * frame][0];
+            mouse_x = mouse_mem[3 * frame + 1][W-1:0];
+            mouse_y = mouse_mem[3 * frame + 2][W-1:0];
+            step = 1'b1;
+            @(posedge clk);
+            #1 step = 1'b0;
+            cycles = 1;
+            while (!frame_done) begin
+                @(posedge clk);
+                #1 cycles = cycles + 1;
+                if (cycles > TIMEOUT) begin
+                    $display("FAIL tb_top_frames: frame %0d did not finish in %0d cycles", frame, TIMEOUT);
+                    $fatal(1);
+                end
+            end
+            if (cycles != `STRAND_CYCLES_PER_FRAME) begin
+                $display("FAIL tb_top_frames: frame %0d took %0d cycles, the formula says %0d", frame, cycles,
+                         `STRAND_CYCLES_PER_FRAME);
+                $fatal(1);
+            end
+            // read every node back: address in, data the next cycle
+            for (node = 0; node < N; node = node + 1) begin
+                rd_addr = ((node / K) << IW) | (node % K);
+                @(posedge clk);
+                #1;
+                want_x = expect_mem[2 * (frame * N + node)][W-1:0];
+                want_y = expect_mem[2 * (frame * N + node) + 1][W-1:0];
+                if (rd_x !== want_x || rd_y !== want_y) begin
+                    $display("FAIL tb_top_frames: frame %0d node %0d: rtl (%h, %h) model (%h, %h)", frame + 1, node,
+                             rd_x, rd_y, want_x, want_y);
+                    $fatal(1);
+                end
+            end
+        end
+        $display("PASS tb_top_frames (%0d frames x %0d nodes bit-exact, %0d cycles per frame)", FRAMES, N,
+                 `STRAND_CYCLES_PER_FRAME);
+        $finish;
+    end
+endmodule
+
+`resetall
