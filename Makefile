@@ -26,10 +26,20 @@ STRAND    := $(BUILD)/strand
 
 SCENES    := $(wildcard sim/scenes/*.scene)
 
+# The RTL: the top and everything under it (rtl/ holds one module per file).
+TOP_SRC   := rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/toward.v \
+             rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v
+# Scenes whose every frame the RTL must reproduce bit for bit (tb/scenes/ hold test-only builds).
+RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
+# Parameter sets the top is linted with, beyond its defaults.
+LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
+             "-GM=16 -GK=16 -GITER=4 -GSUBSTEPS=3 -GSQRT_BITS=12 -GDIV_BITS=9" \
+             "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8"
+
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model run test test-model test-scenes lint lint-c clean
+.PHONY: help bootstrap model run test test-model test-scenes test-rtl-frames lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
 help:
@@ -90,17 +100,28 @@ test-scenes: $(STRAND)
 	  then echo "PASS run $$s --format $$f"; else echo "FAIL run $$s --format $$f"; cat $(BUILD)/scene-run.log; fi; \
 	done; done
 
+# ---- the RTL against the frame engine, every frame, bit for bit ----
+
+test-rtl-frames: $(STRAND) $(GEN_HDRS)
+	@rc=0; for s in $(RTL_SCENES); do scripts/top_frames.sh $$s || rc=1; done; exit $$rc
+
 # ---- lint ----
 
 lint-c: $(GEN_HDRS)
 	@for f in $(MODEL_SRC) model/strand.c; do $(CC) -std=c11 -pedantic $(WARN) -Imodel -I$(GEN) $(DEP_CFLAGS) -fsyntax-only $$f || exit 1; done
 	@echo "lint-c: clean (-std=c11 -pedantic -Wall -Wextra -Werror)"
 
-lint: lint-c $(if $(wildcard tb/units.mk),lint-units)
+lint-rtl: $(GEN_HDRS)
+	@verilator --lint-only -Wall -I$(GEN) $(TOP_SRC) --top-module strand_top
+	@for g in $(LINT_SETS); do verilator --lint-only -Wall -I$(GEN) $$g $(TOP_SRC) --top-module strand_top || exit 1; done
+	@out=$$(iverilog -Wall -g2005 -I$(GEN) -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
+	@echo "lint-rtl: clean (verilator --lint-only -Wall, 4 parameter sets; iverilog -Wall)"
+
+lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 
 # ---- everything ----
 
-TEST_STEPS := test-model test-scenes $(if $(wildcard tb/units.mk),test-units)
+TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames
 
 test: bootstrap
 	@scripts/run_tests.sh $(TEST_STEPS)

@@ -1,0 +1,24 @@
+#!/usr/bin/env bash
+# top_frames.sh SCENE [FRAMES] - run tb/tb_top_frames.v on SCENE under Icarus.
+#
+# Exports the scene with 'strand hwgen' (build, setup, mouse, expected positions from
+# the C frame engine), compiles the bench with iverilog -Wall (any warning fails),
+# runs it, and prints its PASS or FAIL line.
+set -uo pipefail
+cd "$(dirname "$0")/.."
+scene=$1
+frames=${2:-}
+build=${BUILD:-build}
+name=$(basename "$scene" .scene)
+dir=$build/hw/$name
+rtl="rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/toward.v rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v"
+rm -rf "$dir"
+if ! "$build/strand" hwgen "$scene" "$dir" ${frames:+--frames "$frames"}; then
+  echo "FAIL top_frames $name: strand hwgen failed"; exit 1
+fi
+if ! out=$(iverilog -Wall -g2005 -I "$build/gen" -I "$dir" -o "$dir/top.vvp" tb/tb_top_frames.v $rtl 2>&1) || [ -n "$out" ]; then
+  echo "$out"; echo "FAIL top_frames $name: iverilog reported problems"; exit 1
+fi
+result=$(cd "$dir" && timeout 900 vvp -n top.vvp 2>&1)
+echo "$result" | grep -E '^(PASS|FAIL)' | sed "s/tb_top_frames/tb_top_frames $name/"
+echo "$result" | grep -q '^PASS'
