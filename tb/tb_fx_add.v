@@ -57,9 +57,9 @@ module tb_fx_add;
         for (i = 0; i < n; i = i + 1) begin
             sub     = mem[i][RW-4];
             sat_exp = mem[i][RW-3];
-            a       = mem[i][3*FD-1 -: W];
-            b       = mem[i][2*FD-1 -: W];
-            y_exp   = mem[i][FD-1 -: W];
+            a       = mem[i][2*FD +: W];
+            b       = mem[i][FD +: W];
+            y_exp   = mem[i][0 +: W];
             #1;
             if (y !== y_exp || sat !== sat_exp) begin
                 if (errors == 0) begin
@@ -72,7 +72,7 @@ module tb_fx_add;
         if (errors != 0) begin
             $display("FAIL %0s: %0d of %0d vectors wrong; first #%0d %0s a=%h b=%h: y=%h sat=%b, expected y=%h sat=%b",
                      name, errors, n, bad_i, mem[bad_i][RW-4] ? "sub" : "add",
-                     mem[bad_i][3*FD-1 -: W], mem[bad_i][2*FD-1 -: W], bad_got, bad_sat_got, bad_exp, bad_sat_exp);
+                     mem[bad_i][2*FD +: W], mem[bad_i][FD +: W], bad_got, bad_sat_got, bad_exp, bad_sat_exp);
             $fatal(1, "mismatch");
         end
         $display("PASS %0s (%0d vectors)", name, n);

@@ -51,9 +51,9 @@ module tb_fx_avg;
         errors = 0;
         bad_i = -1;
         for (i = 0; i < n; i = i + 1) begin
-            a     = mem[i][3*FD-1 -: W];
-            b     = mem[i][2*FD-1 -: W];
-            y_exp = mem[i][FD-1 -: W];
+            a     = mem[i][2*FD +: W];
+            b     = mem[i][FD +: W];
+            y_exp = mem[i][0 +: W];
             #1;
             if (y !== y_exp) begin
                 if (errors == 0) begin
@@ -65,7 +65,7 @@ module tb_fx_avg;
         end
         if (errors != 0) begin
             $display("FAIL %0s: %0d of %0d vectors wrong; first #%0d a=%h b=%h: y=%h, expected %h",
-                     name, errors, n, bad_i, mem[bad_i][3*FD-1 -: W], mem[bad_i][2*FD-1 -: W], bad_got, bad_exp);
+                     name, errors, n, bad_i, mem[bad_i][2*FD +: W], mem[bad_i][FD +: W], bad_got, bad_exp);
             $fatal(1, "mismatch");
         end
         $display("PASS %0s (%0d vectors)", name, n);

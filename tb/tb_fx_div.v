@@ -113,11 +113,11 @@ module tb_fx_div;
         prev_dbz = 1'b0;
 
         for (i = 0; i < n; i = i + 1) begin
-            num_i   = mem[i][3*FD-1 -: W];
-            den_i   = mem[i][2*FD-1 -: W];
+            num_i   = mem[i][2*FD +: W];
+            den_i   = mem[i][FD +: W];
             sat_exp = mem[i][RW-3];
             dbz_exp = mem[i][RW-4];
-            y_exp   = mem[i][FD-1 -: W];
+            y_exp   = mem[i][0 +: W];
 
             // Once, half way: a reset in the middle of an operation.
             if (i == n / 2) begin

@@ -5,7 +5,8 @@
  * tb_fx_mul - self-checking testbench for rtl/fx_mul.v.
  *
  * Reads vectors written by tb/gen_vectors.c (record: flags {0,0,0,sat}, a, b, y)
- * and checks y and sat for each. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * and checks y, sat and the exact product prod for each.
+ * Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with
  * $fatal (exit status 1) on failure or timeout.
  */
@@ -25,14 +26,17 @@ module tb_fx_mul;
     integer        bad_i;
     reg [W-1:0]    bad_got, bad_exp;
     reg            bad_sat_got, bad_sat_exp;
+    reg [2*W-1:0]  bad_prod_got, bad_prod_exp;
 
     reg  [W-1:0]   a, b;
     wire [W-1:0]   y;
     wire           sat;
+    wire [2*W-1:0] prod;
     reg  [W-1:0]   y_exp;
     reg            sat_exp;
+    wire [2*W-1:0] prod_exp = $signed(a) * $signed(b); // the exact product, checked as is
 
-    fx_mul #(.W(W), .F(F)) dut (.a(a), .b(b), .y(y), .sat(sat));
+    fx_mul #(.W(W), .F(F)) dut (.a(a), .b(b), .y(y), .sat(sat), .prod(prod));
 
     // Watchdog: one vector takes 2 ns.
     initial begin
@@ -56,22 +60,23 @@ module tb_fx_mul;
         bad_i = -1;
         for (i = 0; i < n; i = i + 1) begin
             sat_exp = mem[i][RW-4];
-            a       = mem[i][3*FD-1 -: W];
-            b       = mem[i][2*FD-1 -: W];
-            y_exp   = mem[i][FD-1 -: W];
+            a       = mem[i][2*FD +: W];
+            b       = mem[i][FD +: W];
+            y_exp   = mem[i][0 +: W];
             #1;
-            if (y !== y_exp || sat !== sat_exp) begin
+            if (y !== y_exp || sat !== sat_exp || prod !== prod_exp) begin
                 if (errors == 0) begin
                     bad_i = i; bad_got = y; bad_exp = y_exp; bad_sat_got = sat; bad_sat_exp = sat_exp;
+                    bad_prod_got = prod; bad_prod_exp = prod_exp;
                 end
                 errors = errors + 1;
             end
             #1;
         end
         if (errors != 0) begin
-            $display("FAIL %0s: %0d of %0d vectors wrong; first #%0d a=%h b=%h: y=%h sat=%b, expected y=%h sat=%b",
-                     name, errors, n, bad_i,
-                     mem[bad_i][3*FD-1 -: W], mem[bad_i][2*FD-1 -: W], bad_got, bad_sat_got, bad_exp, bad_sat_exp);
+            $display("FAIL %0s: %0d of %0d vectors wrong; first #%0d a=%h b=%h: y=%h sat=%b prod=%h, expected y=%h sat=%b prod=%h",
+                     name, errors, n, bad_i, mem[bad_i][2*FD +: W], mem[bad_i][FD +: W],
+                     bad_got, bad_sat_got, bad_prod_got, bad_exp, bad_sat_exp, bad_prod_exp);
             $fatal(1, "mismatch");
         end
         $display("PASS %0s (%0d vectors)", name, n);

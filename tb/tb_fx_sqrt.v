@@ -110,9 +110,9 @@ module tb_fx_sqrt;
         prev_sat = 1'b0;
 
         for (i = 0; i < n; i = i + 1) begin
-            rad_i   = mem[i][RD+FD-1 -: 2*W];
+            rad_i   = mem[i][FD +: 2*W];
             sat_exp = mem[i][RW-4];
-            y_exp   = mem[i][FD-1 -: W];
+            y_exp   = mem[i][0 +: W];
 
             // Once, half way: a reset in the middle of an operation.
             if (i == n / 2) begin

@@ -1,0 +1,168 @@
+# tb/units.mk - tests and lint of the arithmetic units (rtl/fx_*.v).
+#
+# Included by the top Makefile; also works alone from the repository root:
+#     make -f tb/units.mk test-units        # every unit test below
+#     make -f tb/units.mk lint-units        # verilator -Wall and iverilog -Wall, no warnings
+#     make -f tb/units.mk test-units-fault  # shows that a planted fault is caught
+# Independent tests run in parallel under make -j.
+#
+# test-units runs:
+#   - one Icarus testbench (tb/tb_fx_*.v) per configuration in UNITS_ICARUS_TESTS,
+#     with vectors from tb/gen_vectors.c (linked with model/fixed.c): exhaustive at
+#     W=8, edge values plus fixed-seed random ones at W=18 and W=32, including
+#     reduced SQRT_BITS/DIV_BITS;
+#   - the Verilator test tb/exhaustive_units.cpp: every operand at W=12 against
+#     model/fixed.c called directly (its two halves run in parallel).
+# Each test prints "PASS <name> (<N> vectors)" or "FAIL <name>: ..."; a recipe fails
+# on a FAIL line, a non-zero exit, a timeout, or a missing PASS line.
+# All variables are prefixed UNITS_ (BUILD is shared with the top Makefile).
+
+UNITS_ROOT := $(abspath $(dir $(lastword $(MAKEFILE_LIST)))/..)
+UNITS_SAVED_GOAL := $(.DEFAULT_GOAL)
+
+BUILD ?= build
+UNITS_BUILD := $(abspath $(BUILD))/units
+
+UNITS_CC        ?= cc
+UNITS_CFLAGS    ?= -std=c11 -Wall -Wextra -Werror -pedantic -O2
+UNITS_IVERILOG  ?= iverilog
+UNITS_VVP       ?= vvp
+UNITS_VERILATOR ?= verilator
+UNITS_TIMEOUT   ?= 300
+UNITS_EXH_LANES ?= 16
+
+UNITS_NAMES := add mul avg sqrt div
+UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v)
+UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
+UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
+
+# Icarus configurations: name:unit:mode:W:F:BITS (F is ignored by add/avg/sqrt,
+# BITS by add/mul/avg; BITS is SQRT_BITS or DIV_BITS).
+UNITS_ICARUS_TESTS := \
+    fx_add_w8_exhaustive:add:exhaustive:8:4:7 \
+    fx_add_w32_random:add:random:32:16:31 \
+    fx_mul_w8_f4_exhaustive:mul:exhaustive:8:4:7 \
+    fx_mul_w8_f1_exhaustive:mul:exhaustive:8:1:7 \
+    fx_mul_w8_f6_exhaustive:mul:exhaustive:8:6:7 \
+    fx_mul_w18_f8_random:mul:random:18:8:17 \
+    fx_mul_w32_f16_random:mul:random:32:16:31 \
+    fx_mul_w32_f30_random:mul:random:32:30:31 \
+    fx_avg_w8_exhaustive:avg:exhaustive:8:4:7 \
+    fx_avg_w32_random:avg:random:32:16:31 \
+    fx_sqrt_w8_b7_exhaustive:sqrt:exhaustive:8:4:7 \
+    fx_sqrt_w8_b3_exhaustive:sqrt:exhaustive:8:4:3 \
+    fx_sqrt_w18_b17_random:sqrt:random:18:8:17 \
+    fx_sqrt_w32_b31_random:sqrt:random:32:16:31 \
+    fx_sqrt_w32_b8_random:sqrt:random:32:16:8 \
+    fx_sqrt_w32_b1_random:sqrt:random:32:16:1 \
+    fx_div_w8_f4_b7_exhaustive:div:exhaustive:8:4:7 \
+    fx_div_w8_f6_b3_exhaustive:div:exhaustive:8:6:3 \
+    fx_div_w8_f1_b7_exhaustive:div:exhaustive:8:1:7 \
+    fx_div_w18_f8_b17_random:div:random:18:8:17 \
+    fx_div_w32_f16_b31_random:div:random:32:16:31 \
+    fx_div_w32_f16_b8_random:div:random:32:16:8 \
+    fx_div_w32_f30_b31_random:div:random:32:30:31
+
+# Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
+UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
+UNITS_PARAMS_mul  = -Ptb_fx_mul.W=$(1) -Ptb_fx_mul.F=$(2)
+UNITS_PARAMS_avg  = -Ptb_fx_avg.W=$(1)
+UNITS_PARAMS_sqrt = -Ptb_fx_sqrt.W=$(1) -Ptb_fx_sqrt.SQRT_BITS=$(3)
+UNITS_PARAMS_div  = -Ptb_fx_div.W=$(1) -Ptb_fx_div.F=$(2) -Ptb_fx_div.DIV_BITS=$(3)
+
+# Run a command with a timeout into a log and judge it:
+# $(call UNITS_JUDGE,command,log,name,expected PASS lines).
+# Success prints the PASS lines; failure prints the whole log and a FAIL line.
+define UNITS_JUDGE
+rc=0; timeout $(UNITS_TIMEOUT) $(1) > $(2) 2>&1 || rc=$$?; \
+passes=$$(grep -c '^PASS ' $(2)); \
+if [ $$rc -eq 0 ] && [ "$$passes" -eq $(4) ] && ! grep -q '^FAIL' $(2); then \
+    grep '^PASS ' $(2); \
+else \
+    cat $(2); \
+    if [ $$rc -eq 124 ]; then echo "FAIL $(3): timeout after $(UNITS_TIMEOUT) s"; \
+    elif ! grep -q '^FAIL' $(2); then echo "FAIL $(3): exit status $$rc, $$passes of $(4) PASS lines"; fi; \
+    exit 1; \
+fi
+endef
+
+.PHONY: test-units lint-units test-units-fault units-icarus units-verilator
+
+test-units: units-icarus units-verilator
+
+$(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
+	@mkdir -p $(dir $@)
+	$(UNITS_CC) $(UNITS_CFLAGS) -o $@ $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_ROOT)/model/fixed.c -lm
+
+# One Icarus test: vectors (cached), simulator (cached), and a run (always).
+# $(1) name, $(2) unit, $(3) mode, $(4) W, $(5) F, $(6) BITS
+define UNITS_ICARUS_RULE
+$(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
+	@mkdir -p $$(dir $$@)
+	$(UNITS_GEN) $(2) $(3) $(4) $(5) $(6) $$@ > $$@.n
+
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v
+	@mkdir -p $$(dir $$@)
+	$(UNITS_IVERILOG) -g2005 -Wall $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$^
+
+.PHONY: units-run-$(1)
+units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+
+units-icarus: units-run-$(1)
+endef
+
+$(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
+
+# Verilator exhaustive test at W=12, F=6, full SQRT_BITS/DIV_BITS.
+UNITS_EXH_DIR := $(UNITS_BUILD)/exhaustive_w12
+UNITS_EXH_BIN := $(UNITS_EXH_DIR)/exhaustive_units
+UNITS_EXH_SRC := $(UNITS_ROOT)/tb/exh_units.v $(UNITS_RTL) $(UNITS_ROOT)/tb/exhaustive_units.cpp $(UNITS_ROOT)/model/fixed.c
+
+$(UNITS_EXH_BIN): $(UNITS_EXH_SRC) $(UNITS_ROOT)/model/fixed.h
+	@mkdir -p $(UNITS_EXH_DIR)
+	$(UNITS_VERILATOR) --cc --exe --build -j 2 -Wall --x-assign fast --x-initial fast \
+	    --top-module exh_units -GW=12 -GF=6 -GLANES=$(UNITS_EXH_LANES) \
+	    -CFLAGS "-DEXH_W=12 -DEXH_F=6 -DEXH_LANES=$(UNITS_EXH_LANES) -I$(UNITS_ROOT)/model" \
+	    -MAKEFLAGS "OPT_FAST=-O2 OPT_GLOBAL=-O2 OPT_SLOW=-O0" \
+	    -Mdir $(UNITS_EXH_DIR) -o exhaustive_units $(UNITS_EXH_SRC) > $(UNITS_EXH_DIR)/build.log 2>&1 \
+	    || { cat $(UNITS_EXH_DIR)/build.log; exit 1; }
+
+# The combinational units and the square root in one process, the divider in another.
+units-verilator: $(UNITS_EXH_BIN)
+	@( $(call UNITS_JUDGE,$(UNITS_EXH_BIN) comb sqrt,$(UNITS_EXH_DIR)/run_a.log,exhaustive_w12_comb_sqrt,5) ) & pa=$$!; \
+	( $(call UNITS_JUDGE,$(UNITS_EXH_BIN) div,$(UNITS_EXH_DIR)/run_b.log,exhaustive_w12_div,1) ) & pb=$$!; \
+	ra=0; rb=0; wait $$pa || ra=$$?; wait $$pb || rb=$$?; [ $$ra -eq 0 ] && [ $$rb -eq 0 ]
+
+# Lint: every unit with default and with edge parameters, no warnings at all.
+UNITS_LINT_PARAMS_add  := "" "-GW=8"
+UNITS_LINT_PARAMS_avg  := "" "-GW=8"
+UNITS_LINT_PARAMS_mul  := "" "-GW=8 -GF=1" "-GW=8 -GF=6" "-GW=18 -GF=8"
+UNITS_LINT_PARAMS_sqrt := "" "-GW=8 -GSQRT_BITS=1" "-GW=8 -GSQRT_BITS=3" "-GW=32 -GSQRT_BITS=8" "-GW=9 -GSQRT_BITS=7"
+UNITS_LINT_PARAMS_div  := "" "-GW=8 -GF=1 -GDIV_BITS=1" "-GW=8 -GF=6 -GDIV_BITS=3" "-GW=32 -GF=30 -GDIV_BITS=8"
+
+lint-units:
+	@set -e; cd $(UNITS_ROOT); \
+	$(foreach u,$(UNITS_NAMES),for p in $(UNITS_LINT_PARAMS_$(u)); do \
+	    $(UNITS_VERILATOR) --lint-only -Wall $$p rtl/fx_$(u).v; done; \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -o /dev/null rtl/fx_$(u).v 2>&1); \
+	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v 2>&1); \
+	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
+	$(UNITS_VERILATOR) --lint-only -Wall --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
+	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches are clean"
+
+# Planted fault: fx_mul with ties rounded up instead of to even, built from a copy
+# in the build tree (rtl/ is untouched). The exhaustive W=8 testbench must FAIL.
+UNITS_FAULT_DIR := $(UNITS_BUILD)/planted_fault
+test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex
+	@mkdir -p $(UNITS_FAULT_DIR)
+	@sed 's/round_up = half & (sticky | q\[0\])/round_up = half/' $(UNITS_ROOT)/rtl/fx_mul.v > $(UNITS_FAULT_DIR)/fx_mul.v
+	@! cmp -s $(UNITS_ROOT)/rtl/fx_mul.v $(UNITS_FAULT_DIR)/fx_mul.v || { echo "test-units-fault: could not plant the fault"; exit 1; }
+	@$(UNITS_IVERILOG) -g2005 -Wall $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
+	    $(UNITS_ROOT)/tb/tb_fx_mul.v $(UNITS_FAULT_DIR)/fx_mul.v
+	@if ( $(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/sim.vvp +vectors=$< +n=$$(cat $<.n) +name=fx_mul_w8_f4_planted_fault,$(UNITS_FAULT_DIR)/run.log,fx_mul_w8_f4_planted_fault,1) ); \
+	then echo "test-units-fault: the planted fault was NOT detected"; exit 1; \
+	else echo "test-units-fault: planted fault (ties rounded up in fx_mul) detected, as it must be"; fi
+
+.DEFAULT_GOAL := $(UNITS_SAVED_GOAL)
