@@ -251,14 +251,16 @@ module node_unit #(
             wb_x     <= {W{1'b0}};
             wb_y     <= {W{1'b0}};
         end else begin
-            if ({1'b0, b_idx} < K_COUNT) begin
-                b_x <= x_mem[b_idx];
-                b_y <= y_mem[b_idx];
-            end
+            // an index past the last node reads as 0, never as X
+            b_x <= {1'b0, b_idx} < K_COUNT ? x_mem[b_idx] : {W{1'b0}};
+            b_y <= {1'b0, b_idx} < K_COUNT ? y_mem[b_idx] : {W{1'b0}};
+            // the lane changes only when a node is written
             wb_valid <= we && {1'b0, widx} < K_COUNT;
-            wb_idx   <= widx;
-            wb_x     <= wx;
-            wb_y     <= wy;
+            if (we && {1'b0, widx} < K_COUNT) begin
+                wb_idx <= widx;
+                wb_x   <= wx;
+                wb_y   <= wy;
+            end
         end
     end
 

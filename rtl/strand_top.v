@@ -92,6 +92,7 @@ module strand_top #(
     localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];
     localparam [CW-1:0] N_LAST   = N_LAST_I[CW-1:0];
     localparam [SW-1:0] SUB_LAST = SUB_LAST_I[SW-1:0];
+    localparam [UW:0]   M_COUNT  = M[UW:0];
 
     // ---- run-time registers ----
     reg [W-1:0] gdt2_x, gdt2_y, rest_len, impulse, box_x, box_y, damping;
@@ -214,9 +215,11 @@ module strand_top #(
     wire [M*W-1:0] a_x_all, a_y_all;
     wire [M-1:0]  a_pin_all, done_all;
     reg  [UW-1:0] rd_sel_q;  // unit whose port-A data the sequencer sees
-    wire [W-1:0]  seq_rd_x = a_x_all[rd_sel_q * W +: W];
-    wire [W-1:0]  seq_rd_y = a_y_all[rd_sel_q * W +: W];
-    wire          seq_rd_pin = a_pin_all[rd_sel_q];
+    // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
+    wire          sel_ok   = {1'b0, rd_sel_q} < M_COUNT;
+    wire [W-1:0]  seq_rd_x = sel_ok ? a_x_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_y = sel_ok ? a_y_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire          seq_rd_pin = sel_ok && a_pin_all[rd_sel_q];
 
     always @(posedge clk) rd_sel_q <= seq_rd_u;
 
@@ -251,8 +254,9 @@ module strand_top #(
     reg  [UW-1:0] rd_u_q;
     wire [M*W-1:0] b_x_all, b_y_all;
     always @(posedge clk) rd_u_q <= rd_u;
-    assign rd_x = b_x_all[rd_u_q * W +: W];
-    assign rd_y = b_y_all[rd_u_q * W +: W];
+    wire rd_ok = {1'b0, rd_u_q} < M_COUNT;  // past the last unit: 0, never X
+    assign rd_x = rd_ok ? b_x_all[rd_u_q * W +: W] : {W{1'b0}};
+    assign rd_y = rd_ok ? b_y_all[rd_u_q * W +: W] : {W{1'b0}};
 
     wire [UW-1:0] pin_u = cfg_data[UW+IW-1:IW];
     wire [IW-1:0] pin_n = cfg_data[IW-1:0];
