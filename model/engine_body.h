@@ -160,16 +160,16 @@ void P(spring_edge)(SIM *s, int e)
 }
 
 /* Verlet (reference 000, damping of reference 002): v = x - x-; v -= d v; x- = x; x += v + g h^2 + F. */
-void P(verlet_node)(SIM *s, int i)
+bool P(verlet_node)(SIM *s, int i)
 {
     const scene *sc = s->sc;
-    if (P(node_pinned)(s, i)) return;
+    if (P(node_pinned)(s, i)) return false;
     if (s->grabbed == i) { /* follows the pointer; releasing it keeps the pointer's last motion */
         for (int k = 0; k < s->dim; k++) {
             s->prev[i][k] = s->pos[i][k];
             s->pos[i][k] = s->mouse[k];
         }
-        return;
+        return true;
     }
     for (int k = 0; k < s->dim; k++) {
         NUM v = SUB(s->pos[i][k], s->prev[i][k]);
@@ -181,6 +181,7 @@ void P(verlet_node)(SIM *s, int i)
         if (sc->en_springs) x = ADD(x, s->acc[i][k]);
         s->pos[i][k] = x;
     }
+    return true;
 }
 
 /* Mouse impulse (reference 000): in touch, x- <- x + a if mouse.x < x- else x - a. */
@@ -211,11 +212,11 @@ static bool P(toward)(SIM *s, int from, int c, NUM out[3])
  * the point at `dist` from D. At a rope end, or where one length is zero, the one
  * remaining point is used; with none, C stays.
  */
-void P(centred_node)(SIM *s, int i)
+bool P(centred_node)(SIM *s, int i)
 {
     NUM up[3], down[3];
     bool has_up, has_down;
-    if (P(node_fixed)(s, i)) return;
+    if (P(node_fixed)(s, i)) return false;
     has_up = i > 0 && P(toward)(s, i - 1, i, up);
     has_down = i + 1 < s->n && P(toward)(s, i + 1, i, down);
     for (int k = 0; k < s->dim; k++) {
@@ -226,6 +227,7 @@ void P(centred_node)(SIM *s, int i)
         else if (has_down)
             s->pos[i][k] = down[k];
     }
+    return has_up || has_down;
 }
 
 /*

@@ -58,9 +58,9 @@ typedef struct sim_dbl {
     /* The steps of a frame, in order, for the cycle model. */                                          \
     void P##begin_frame(SIM *s);     /* sample the mouse; grab or release a node */                     \
     void P##spring_edge(SIM *s, int e);  /* accumulate one spring's force on its ends */                \
-    void P##verlet_node(SIM *s, int i);  /* Verlet step of one node (and follow the pointer if grabbed) */ \
+    bool P##verlet_node(SIM *s, int i);  /* Verlet step of one node (or follow the pointer); false if pinned */ \
     void P##mouse_node(SIM *s, int i);   /* mouse impulse on one node, after its Verlet step */         \
-    void P##centred_node(SIM *s, int i); /* centred chain constraint on node i (reference 000) */       \
+    bool P##centred_node(SIM *s, int i); /* centred chain constraint on node i; true if it was written */ \
     void P##pair_edge(SIM *s, int e);    /* pairwise constraint on one rod or strut */                  \
     void P##ground_node(SIM *s, int i);  /* ground collision with friction */                           \
     void P##substep(SIM *s);                                                                             \

@@ -1,0 +1,320 @@
+/*
+ * cycle.c - strand_top, edge by edge. Each block below names the RTL register or
+ * always block it mirrors. Everything in one edge is computed from the state
+ * before the edge (as nonblocking assignments do), in this order: port B samples
+ * the storage (read before write), the storage writes of this edge happen (the
+ * frame engine's per-node functions), then the control registers update.
+ */
+#include "cycle.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+#include "strand_regs.h"
+
+static fx_t from_word(const fx_format *fmt, uint32_t w)
+{
+    uint32_t mask = fmt->width == 32 ? 0xffffffffu : (1u << fmt->width) - 1;
+    uint32_t sign = 1u << (fmt->width - 1);
+    w &= mask;
+    return (fx_t)(int32_t)((w ^ sign) - sign); /* sign-extend */
+}
+
+static uint32_t to_word(const fx_format *fmt, fx_t v) { return hw_word(fmt, v); }
+
+bool cyc_init(cyc_model *c, const hw_params *hp)
+{
+    int n = hp->m * hp->k;
+    memset(c, 0, sizeof *c);
+    if (hp->m > CYC_MAX_UNITS) return false;
+    c->hp = *hp;
+    /* A chain with the build's effects; every value 0, as after reset. */
+    scene *sc = &c->sc;
+    snprintf(sc->name, sizeof sc->name, "rtl");
+    sc->dim = 2;
+    sc->number = NUMBER_FIXED;
+    sc->fmt = (fx_format){hp->w, hp->f, hp->sqrt_bits, hp->div_bits};
+    sc->dt = 1;
+    sc->substeps = hp->substeps;
+    sc->iterations = hp->iter;
+    sc->integrator = INTEGRATOR_VERLET;
+    sc->damping = hp->en_damping ? 1.0 : 0.0; /* a flag only: the value comes from the DAMPING register */
+    sc->body = BODY_CHAIN;
+    sc->units = hp->m;
+    sc->nodes_per_unit = hp->k;
+    sc->n_nodes = n;
+    sc->mass = 1;
+    sc->en_gravity = hp->en_gravity;
+    sc->en_mouse = hp->en_mouse;
+    sc->mouse = MOUSE_IMPULSE;
+    sc->en_constraints = hp->en_constraints;
+    sc->rule = RULE_CENTRED;
+    sc->pos = calloc((size_t)n, sizeof *sc->pos);
+    sc->prev = calloc((size_t)n, sizeof *sc->prev);
+    sc->pinned = calloc((size_t)n, sizeof *sc->pinned);
+    if (!sc->pos || !sc->prev || !sc->pinned || !sim_fx_init(&c->s, sc, &sc->fmt)) return false;
+    c->lt = hp->sqrt_bits + hp->div_bits + 9;
+    return true;
+}
+
+void cyc_free(cyc_model *c)
+{
+    sim_fx_free(&c->s);
+    scene_free(&c->sc);
+}
+
+uint32_t cyc_node_word(const cyc_model *c, int i, int axis) { return to_word(&c->s.fmt, c->s.pos[i][axis]); }
+
+void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
+{
+    const fx_format *f = &c->s.fmt;
+    int m = c->hp.m;
+    memset(o, 0, sizeof *o);
+    o->frame_done = c->frame_done;
+    o->rd_x = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_x[c->rd_u_q]) : 0;
+    o->rd_y = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_y[c->rd_u_q]) : 0;
+    o->phase = c->phase;
+    o->fv = c->done;
+    o->fec = c->hp.en_constraints && c->counter == m * c->hp.k;
+    o->uidx = (uint32_t)c->uidx;
+    o->nidx = (uint32_t)c->nidx;
+    o->counter = (uint32_t)c->counter;
+    o->units = m;
+    for (int u = 0; u < m; u++) {
+        o->wb_valid[u] = c->wb_valid[u];
+        o->wb_idx[u] = c->wb_idx[u];
+        o->wb_x[u] = to_word(f, c->wb_x[u]);
+        o->wb_y[u] = to_word(f, c->wb_y[u]);
+    }
+}
+
+static void reset_all(cyc_model *c)
+{
+    int n = c->hp.m * c->hp.k;
+    for (int i = 0; i < n; i++) {
+        memset(c->s.pos[i], 0, sizeof c->s.pos[i]);
+        memset(c->s.prev[i], 0, sizeof c->s.prev[i]);
+        c->sc.pinned[i] = false;
+    }
+    for (int k = 0; k < 3; k++) c->s.gravity[k] = c->s.box[k] = c->s.mouse[k] = 0;
+    c->s.dist = c->s.impulse = c->s.damping = 0;
+    c->s.mouse_down = false;
+    c->phase = PH_IDLE;
+    c->substep = 0;
+    c->frame_done = false;
+    c->mouse_q[0] = c->mouse_q[1] = 0;
+    c->mouse_down_q = false;
+    c->init_u = c->init_n = c->init_count = 0;
+    c->init_pos[0] = c->init_pos[1] = 0;
+    c->start[0] = c->start[1] = c->step[0] = c->step[1] = 0;
+    c->running = c->done = false;
+    c->vidx = 0;
+    for (int u = 0; u < c->hp.m; u++) {
+        c->b_x[u] = c->b_y[u] = 0;
+        c->wb_valid[u] = false;
+        c->wb_idx[u] = 0;
+        c->wb_x[u] = c->wb_y[u] = 0;
+    }
+    c->sq_state = SQ_IDLE;
+    c->sq_iter = c->sq_timer = 0;
+    c->uidx = c->nidx = c->counter = 0;
+    c->sq_done = false;
+}
+
+/* node_unit's write-back lane: a write to unit u shows in the next cycle. */
+static void lane_write(cyc_model *c, bool *written, int u, int idx, int node)
+{
+    written[u] = true;
+    c->wb_idx[u] = (uint32_t)idx;
+    c->wb_x[u] = c->s.pos[node][0];
+    c->wb_y[u] = c->s.pos[node][1];
+}
+
+void cyc_edge(cyc_model *c, const cyc_inputs *in)
+{
+    const hw_params *hp = &c->hp;
+    const fx_format *f = &c->s.fmt;
+    const int m = hp->m, k = hp->k, n = m * k;
+    bool written[CYC_MAX_UNITS] = {false};
+    uint32_t rd_u = in->rd_addr >> hp->iw & ((1u << hp->uw) - 1), rd_n = in->rd_addr & ((1u << hp->iw) - 1);
+
+    c->cycle++;
+    c->rd_u_q = rd_u; /* strand_top rd_u_q: not reset, follows rd_addr */
+    if (in->reset) {
+        reset_all(c);
+        return;
+    }
+
+    /* Combinational signals of this cycle, from the state before the edge. */
+    const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1);
+    const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
+    const bool verlet_end = c->phase == PH_VERLET && c->done;
+    const bool substep_end = (verlet_end && !hp->en_constraints) || (c->phase == PH_CONSTRAIN && c->sq_done);
+    const bool last_substep = c->substep == hp->substeps - 1;
+    const bool verlet_start = frame_start || (substep_end && !last_substep);
+    const bool seq_start = verlet_end && hp->en_constraints;
+
+    /* node_unit port B: every unit samples node rd_n before this edge's writes. */
+    for (int u = 0; u < m; u++) {
+        bool ok = rd_n < (uint32_t)k;
+        c->b_x[u] = ok ? c->s.pos[u * k + (int)rd_n][0] : 0;
+        c->b_y[u] = ok ? c->s.pos[u * k + (int)rd_n][1] : 0;
+    }
+
+    /* Storage writes. The init walk (strand_top PH_INIT): node (init_u, init_n) at rest. */
+    if (c->phase == PH_INIT) {
+        int node = c->init_u * k + c->init_n;
+        for (int a = 0; a < 2; a++) c->s.pos[node][a] = c->s.prev[node][a] = c->init_pos[a];
+        lane_write(c, written, c->init_u, c->init_n, node);
+    }
+    /* The Verlet pass (node_unit, running): node vidx of every unit. */
+    if (c->running && !verlet_start) {
+        for (int u = 0; u < m; u++) {
+            int node = u * k + c->vidx;
+            c->s.mouse[0] = c->mouse_q[0];
+            c->s.mouse[1] = c->mouse_q[1];
+            c->s.mouse_down = c->mouse_down_q;
+            if (sim_fx_verlet_node(&c->s, node)) {
+                if (hp->en_mouse) sim_fx_mouse_node(&c->s, node);
+                lane_write(c, written, u, c->vidx, node);
+            }
+        }
+    }
+    /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
+    if (c->sq_state == SQ_NEXT) {
+        int node = c->uidx * k + c->nidx;
+        if (sim_fx_centred_node(&c->s, node)) lane_write(c, written, c->uidx, c->nidx, node);
+    }
+    for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
+
+    /* chain_sequencer control. */
+    {
+        const bool last_node = c->counter == n - 1;
+        const bool last_iter = c->sq_iter == hp->iter - 1;
+        int next = c->sq_state;
+        c->sq_done = false;
+        switch (c->sq_state) {
+        case SQ_IDLE:
+            if (seq_start) {
+                c->sq_iter = 0;
+                next = SQ_LOAD_C;
+            }
+            break;
+        case SQ_LOAD_C:
+            c->uidx = c->nidx = c->counter = 0;
+            next = SQ_LOAD_D;
+            break;
+        case SQ_LOAD_D: next = SQ_UP; break;
+        case SQ_UP:
+            c->sq_timer = c->lt; /* toward started now: done is high lt cycles later */
+            next = SQ_UP_W;
+            break;
+        case SQ_UP_W:
+        case SQ_DN_W:
+            if (--c->sq_timer == 0) {
+                c->sq_timer = c->lt; /* the second toward starts in the done cycle */
+                next = c->sq_state == SQ_UP_W ? SQ_DN_W : SQ_NEXT;
+            }
+            break;
+        case SQ_NEXT:
+            c->counter++;
+            if (!last_node) {
+                if (c->nidx == k - 1) {
+                    c->nidx = 0;
+                    c->uidx++;
+                } else {
+                    c->nidx++;
+                }
+                next = SQ_UP;
+            } else if (last_iter) {
+                c->sq_done = true;
+                next = SQ_IDLE;
+            } else {
+                c->sq_iter++;
+                next = SQ_LOAD_C;
+            }
+            break;
+        }
+        c->sq_state = next;
+    }
+
+    /* node_unit pass FSM. */
+    if (verlet_start) {
+        c->running = true;
+        c->done = false;
+        c->vidx = 0;
+    } else if (c->running) {
+        if (c->vidx == k - 1) {
+            c->running = false;
+            c->done = true;
+        }
+        c->vidx = (c->vidx + 1) & ((1 << hp->iw) - 1);
+    }
+
+    /* strand_top frame FSM. */
+    c->frame_done = false;
+    switch (c->phase) {
+    case PH_IDLE:
+        if (cmd_init) {
+            c->phase = PH_INIT;
+            c->init_u = c->init_n = c->init_count = 0;
+            c->init_pos[0] = c->start[0];
+            c->init_pos[1] = c->start[1];
+        } else if (in->step) {
+            c->phase = PH_VERLET;
+            c->substep = 0;
+            c->mouse_q[0] = from_word(f, in->mouse_x);
+            c->mouse_q[1] = from_word(f, in->mouse_y);
+            c->mouse_down_q = in->mouse_down;
+        }
+        break;
+    case PH_INIT:
+        c->init_pos[0] = fx_add(f, c->init_pos[0], c->step[0]);
+        c->init_pos[1] = fx_add(f, c->init_pos[1], c->step[1]);
+        if (c->init_n == k - 1) {
+            c->init_n = 0;
+            c->init_u++;
+        } else {
+            c->init_n++;
+        }
+        if (c->init_count++ == n - 1) c->phase = PH_IDLE;
+        break;
+    case PH_VERLET:
+        if (seq_start) c->phase = PH_CONSTRAIN;
+        break;
+    default: break;
+    }
+    if (substep_end) {
+        if (last_substep) {
+            c->phase = PH_IDLE;
+            c->frame_done = true;
+        } else {
+            c->phase = PH_VERLET;
+            c->substep++;
+        }
+    }
+
+    /* Register writes (strand_top's register file and the units' pin flags). */
+    if (in->cfg_we) {
+        fx_t v = from_word(f, in->cfg_data);
+        switch (in->cfg_addr) {
+        case STRAND_REG_GDT2_X: c->s.gravity[0] = v; break;
+        case STRAND_REG_GDT2_Y: c->s.gravity[1] = v; break;
+        case STRAND_REG_DIST: c->s.dist = v; break;
+        case STRAND_REG_IMPULSE: c->s.impulse = v; break;
+        case STRAND_REG_BOX_X: c->s.box[0] = v; break;
+        case STRAND_REG_BOX_Y: c->s.box[1] = v; break;
+        case STRAND_REG_DAMPING: c->s.damping = v; break;
+        case STRAND_REG_START_X: c->start[0] = v; break;
+        case STRAND_REG_START_Y: c->start[1] = v; break;
+        case STRAND_REG_STEP_X: c->step[0] = v; break;
+        case STRAND_REG_STEP_Y: c->step[1] = v; break;
+        case STRAND_REG_PIN: {
+            uint32_t u = in->cfg_data >> hp->iw & ((1u << hp->uw) - 1), nn = in->cfg_data & ((1u << hp->iw) - 1);
+            if (u < (uint32_t)m && nn < (uint32_t)k) c->sc.pinned[u * k + (int)nn] = true;
+            break;
+        }
+        default: break;
+        }
+    }
+}

@@ -1,0 +1,96 @@
+/*
+ * cycle.h - the cycle model: strand_top, register for register, clock by clock.
+ *
+ * It holds the RTL's control state (phases, counters, the sequencer's states and
+ * the datapath's fixed latency) and its visible registers (read port, write-back
+ * lanes, status), and predicts every output of strand_top on every cycle. Node
+ * positions live in a sim_fx, and are changed by the frame engine's own per-node
+ * functions (verlet_node, mouse_node, centred_node) at the edge where the RTL
+ * writes that node, so the cycle model and the frame engine cannot drift apart.
+ *
+ * Use: cyc_init() for a build; each cycle, cyc_outputs() gives what the RTL shows
+ * now, and cyc_edge() applies the inputs present before the rising edge.
+ */
+#ifndef STRAND_CYCLE_H
+#define STRAND_CYCLE_H
+
+#include <stdint.h>
+
+#include "hwgen.h"
+#include "sim.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#define CYC_MAX_UNITS 256
+
+enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3 };
+enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };
+
+/* The inputs of strand_top during one cycle (all W-bit words raw). */
+typedef struct {
+    bool reset;
+    uint32_t mouse_x, mouse_y;
+    bool mouse_down;
+    bool step;
+    bool cfg_we;
+    uint32_t cfg_addr, cfg_data;
+    uint32_t rd_addr;
+} cyc_inputs;
+
+/* The outputs of strand_top during one cycle. */
+typedef struct {
+    bool frame_done;
+    uint32_t rd_x, rd_y;
+    int phase;
+    bool fv, fec;
+    uint32_t uidx, nidx, counter;
+    int units;
+    bool wb_valid[CYC_MAX_UNITS];
+    uint32_t wb_idx[CYC_MAX_UNITS], wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
+} cyc_outputs;
+
+typedef struct {
+    hw_params hp;
+    scene sc;    /* a chain of M x K nodes with the build's effects; pins come from PIN writes */
+    sim_fx s;    /* node positions and the run-time constants */
+    long cycle;  /* edges since cyc_init */
+    int lt;      /* toward's latency (cycles) */
+
+    /* strand_top */
+    int phase, substep;
+    bool frame_done;
+    fx_t mouse_q[2];
+    bool mouse_down_q;
+    int init_u, init_n, init_count;
+    fx_t init_pos[2], start[2], step[2];
+    uint32_t rd_u_q;
+    /* node units (they run in step) */
+    bool running, done;
+    int vidx;
+    fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS];
+    bool wb_valid[CYC_MAX_UNITS];
+    uint32_t wb_idx[CYC_MAX_UNITS];
+    fx_t wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
+    /* chain_sequencer */
+    int sq_state, sq_iter, sq_timer;
+    int uidx, nidx, counter;
+    bool sq_done;
+} cyc_model;
+
+/* The model of a build (all nodes at 0, nothing pinned, registers 0: strand_top after reset). */
+bool cyc_init(cyc_model *c, const hw_params *hp);
+void cyc_free(cyc_model *c);
+/* What strand_top shows in the current cycle. */
+void cyc_get_outputs(const cyc_model *c, cyc_outputs *out);
+/* One rising edge with these inputs. */
+void cyc_edge(cyc_model *c, const cyc_inputs *in);
+/* Node i's position (raw W-bit words), as the RTL's storage holds it now. */
+uint32_t cyc_node_word(const cyc_model *c, int i, int axis);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif
