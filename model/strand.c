@@ -366,29 +366,34 @@ static int cmd_compare(int argc, char **argv)
 
 static int cmd_hwgen(int argc, char **argv)
 {
-    options o;
-    int rc = 0;
     scene sc;
     char err[SCENE_ERR_LEN];
-    const char *path, *dir;
-    if (argc >= 2 && (!strcmp(argv[1], "--help") || !strcmp(argv[1], "-h"))) {
-        fputs(usage_hwgen, stdout);
-        return 0;
+    const char *pos[2] = {NULL, NULL};
+    int npos = 0, frames = -1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage_hwgen, stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--frames")) {
+            if (i + 1 >= argc || !parse_count(argv[i + 1], &frames))
+                return bad_arg("hwgen", "--frames: '%s' is not a frame count (0..100000000)", i + 1 < argc ? argv[i + 1] : "");
+            i++;
+        } else if (argv[i][0] == '-') {
+            return bad_arg("hwgen", "unknown option '%s'", argv[i]);
+        } else if (npos < 2) {
+            pos[npos++] = argv[i];
+        } else {
+            return bad_arg("hwgen", "unexpected argument '%s'", argv[i]);
+        }
     }
-    if (argc < 3) return bad_arg("hwgen", "%s", "needs SCENE and DIR");
-    dir = argv[argc - 1];
-    path = parse_options("hwgen", argc - 1, argv, &o, "f", &rc);
-    if (!path) {
-        if (o.help) fputs(usage_hwgen, stdout);
-        return rc;
-    }
-    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (npos < 2) return bad_arg("hwgen", "%s", "needs SCENE and DIR");
+    if (!load(pos[0], &sc)) return EXIT_BAD_INPUT;
     if (hw_check(&sc, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         scene_free(&sc);
         return EXIT_BAD_INPUT;
     }
-    if (!hw_export(&sc, dir, o.frames >= 0 ? o.frames : sc.frames, err, sizeof err)) {
+    if (!hw_export(&sc, pos[1], frames >= 0 ? frames : sc.frames, err, sizeof err)) {
         fprintf(stderr, "strand hwgen: %s\n", err);
         scene_free(&sc);
         return 1;

@@ -66,11 +66,37 @@ module chain_sequencer #(
     localparam [IW-1:0]  K_LAST    = K_LAST_I[IW-1:0];
     localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
 
+    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
+    // $fatal for the simulators (Icarus carries on after $error).
     initial begin
-        if (M < 1 || K < 1) $error("chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
-        if ((1 << CW) <= N) $error("chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N);
-        if ((1 << UW) < M || (1 << IW) < K) $error("chain_sequencer: UW/IW too narrow in %m");
-        if (ITER < 1) $error("chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER);
+        if (M < 1 || K < 1) begin
+`ifdef SYNTHESIS
+            $error("chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
+`else
+            $fatal(1, "chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
+`endif
+        end
+        if ((1 << CW) <= N) begin
+`ifdef SYNTHESIS
+            $error("chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N);
+`else
+            $fatal(1, "chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N);
+`endif
+        end
+        if ((1 << UW) < M || (1 << IW) < K) begin
+`ifdef SYNTHESIS
+            $error("chain_sequencer: UW/IW too narrow in %m");
+`else
+            $fatal(1, "chain_sequencer: UW/IW too narrow in %m");
+`endif
+        end
+        if (ITER < 1) begin
+`ifdef SYNTHESIS
+            $error("chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER);
+`else
+            $fatal(1, "chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER);
+`endif
+        end
     end
 
     localparam [2:0] S_IDLE   = 3'd0, // waiting for start; node 0 is addressed
@@ -140,6 +166,7 @@ module chain_sequencer #(
         case (state_q)
             S_IDLE:   begin rd_uidx = {UW{1'b0}}; rd_nidx = {IW{1'b0}}; end
             S_LOAD_C: begin rd_uidx = N1_U;       rd_nidx = N1_N;       end
+            S_LOAD_D: begin rd_uidx = N2_U;       rd_nidx = N2_N;       end  // not yet in ahead_*
             S_NEXT:   if (last_node) begin rd_uidx = {UW{1'b0}}; rd_nidx = {IW{1'b0}}; end
             default:  ;
         endcase

@@ -30,7 +30,11 @@ module node_unit #(
     parameter integer IW         = 3,  // node index width, >= clog2(K), >= 1
     parameter [0:0]  EN_GRAVITY = 1'b1,  // add g h^2 in the Verlet step
     parameter [0:0]  EN_DAMPING = 1'b0,  // Verlet damping v -= v * d (two multipliers)
-    parameter [0:0]  EN_MOUSE = 1'b1   // reference-000 mouse impulse
+    parameter [0:0]  EN_MOUSE = 1'b1,  // reference-000 mouse impulse
+    /* verilator lint_off UNUSEDPARAM */
+    // read only by the test-only planted fault (STRAND_FAULT_FLIP)
+    parameter integer UNIT_ID  = 0      // this unit's number
+    /* verilator lint_on UNUSEDPARAM */
 ) (
     input  wire          clk,
     input  wire          reset,        // synchronous, active high: all nodes at 0, unpinned
@@ -73,9 +77,23 @@ module node_unit #(
     output reg  [W-1:0]  wb_y
 );
 
+    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
+    // $fatal for the simulators (Icarus carries on after $error).
     initial begin
-        if (K < 1) $error("node_unit: K must be >= 1 (K=%0d) in %m", K);
-        if ((1 << IW) < K) $error("node_unit: IW=%0d cannot index K=%0d nodes in %m", IW, K);
+        if (K < 1) begin
+`ifdef SYNTHESIS
+            $error("node_unit: K must be >= 1 (K=%0d) in %m", K);
+`else
+            $fatal(1, "node_unit: K must be >= 1 (K=%0d) in %m", K);
+`endif
+        end
+        if ((1 << IW) < K) begin
+`ifdef SYNTHESIS
+            $error("node_unit: IW=%0d cannot index K=%0d nodes in %m", IW, K);
+`else
+            $fatal(1, "node_unit: IW=%0d cannot index K=%0d nodes in %m", IW, K);
+`endif
+        end
     end
 
     localparam integer  K_LAST_I = K - 1;
@@ -211,7 +229,18 @@ module node_unit #(
     wire          pass_we = running_q && !q_pin;
     wire          we      = pass_we || w_en;
     wire [IW-1:0] widx    = running_q ? vidx_q : w_idx;
+`ifdef STRAND_FAULT_FLIP
+    // Test only (the harness's planted-fault check): bit 0 of x is flipped in the
+    // fifth Verlet write of unit 0 after reset.
+    reg [2:0] fault_writes;
+    always @(posedge clk)
+        if (reset) fault_writes <= 3'd0;
+        else if (pass_we && fault_writes != 3'd7) fault_writes <= fault_writes + 1'b1;
+    wire fault_flip = UNIT_ID == 0 && pass_we && fault_writes == 3'd4;
+    wire [W-1:0]  wx      = running_q ? nx ^ {{(W-1){1'b0}}, fault_flip} : w_x;
+`else
     wire [W-1:0]  wx      = running_q ? nx : w_x;
+`endif
     wire [W-1:0]  wy      = running_q ? ny : w_y;
     wire [W-1:0]  wpx     = running_q ? npx : w_x;
     wire [W-1:0]  wpy     = running_q ? q_y : w_y;

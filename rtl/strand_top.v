@@ -74,14 +74,58 @@ module strand_top #(
 
     localparam integer N = M * K;
 
+    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
+    // $fatal for the simulators (Icarus carries on after $error).
     initial begin
-        if (W < 8 || W > 32) $error("strand_top: W must be 8..32 (W=%0d) in %m", W);
-        if (F < 1 || F > W - 2) $error("strand_top: F must be 1..W-2 (F=%0d) in %m", F);
-        if (M < 1 || K < 1) $error("strand_top: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
-        if (SQRT_BITS < 1 || SQRT_BITS > W - 1) $error("strand_top: SQRT_BITS must be 1..W-1 in %m");
-        if (DIV_BITS < 1 || DIV_BITS > W - 1) $error("strand_top: DIV_BITS must be 1..W-1 in %m");
-        if (ITER < 1 || SUBSTEPS < 1) $error("strand_top: ITER and SUBSTEPS must be >= 1 in %m");
-        if (UW + IW > W) $error("strand_top: a {unit, node} address (%0d bits) must fit W=%0d in %m", UW + IW, W);
+        if (W < 8 || W > 32) begin
+`ifdef SYNTHESIS
+            $error("strand_top: W must be 8..32 (W=%0d) in %m", W);
+`else
+            $fatal(1, "strand_top: W must be 8..32 (W=%0d) in %m", W);
+`endif
+        end
+        if (F < 1 || F > W - 2) begin
+`ifdef SYNTHESIS
+            $error("strand_top: F must be 1..W-2 (F=%0d) in %m", F);
+`else
+            $fatal(1, "strand_top: F must be 1..W-2 (F=%0d) in %m", F);
+`endif
+        end
+        if (M < 1 || K < 1) begin
+`ifdef SYNTHESIS
+            $error("strand_top: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
+`else
+            $fatal(1, "strand_top: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
+`endif
+        end
+        if (SQRT_BITS < 1 || SQRT_BITS > W - 1) begin
+`ifdef SYNTHESIS
+            $error("strand_top: SQRT_BITS must be 1..W-1 in %m");
+`else
+            $fatal(1, "strand_top: SQRT_BITS must be 1..W-1 in %m");
+`endif
+        end
+        if (DIV_BITS < 1 || DIV_BITS > W - 1) begin
+`ifdef SYNTHESIS
+            $error("strand_top: DIV_BITS must be 1..W-1 in %m");
+`else
+            $fatal(1, "strand_top: DIV_BITS must be 1..W-1 in %m");
+`endif
+        end
+        if (ITER < 1 || SUBSTEPS < 1) begin
+`ifdef SYNTHESIS
+            $error("strand_top: ITER and SUBSTEPS must be >= 1 in %m");
+`else
+            $fatal(1, "strand_top: ITER and SUBSTEPS must be >= 1 in %m");
+`endif
+        end
+        if (UW + IW > W) begin
+`ifdef SYNTHESIS
+            $error("strand_top: a {unit, node} address (%0d bits) must fit W=%0d in %m", UW + IW, W);
+`else
+            $fatal(1, "strand_top: a {unit, node} address (%0d bits) must fit W=%0d in %m", UW + IW, W);
+`endif
+        end
     end
 
     localparam [1:0] PH_IDLE = 2'd0, PH_INIT = 2'd1, PH_VERLET = 2'd2, PH_CONSTRAIN = 2'd3;
@@ -134,6 +178,7 @@ module strand_top #(
     reg  [W-1:0]  init_x, init_y;
     wire [W-1:0]  init_x_next, init_y_next;
     wire          seq_done;
+    wire          fec_seq;
 
     wire frame_start   = phase == PH_IDLE && !cmd_init && step;
     wire verlet_end    = phase == PH_VERLET && fv;
@@ -230,7 +275,7 @@ module strand_top #(
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
                 .rd_uidx(seq_rd_u), .rd_nidx(seq_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
                 .wr_en(seq_wr_en), .wr_uidx(seq_wr_u), .wr_nidx(seq_wr_n), .wr_x(seq_wr_x), .wr_y(seq_wr_y),
-                .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec));
+                .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec_seq));
         end else begin : g_no_constraints
             assign seq_done = 1'b0;
             assign seq_rd_u = {UW{1'b0}};
@@ -243,7 +288,7 @@ module strand_top #(
             assign uidx = {UW{1'b0}};
             assign nidx = {IW{1'b0}};
             assign counter = {CW{1'b0}};
-            assign fec = 1'b0;
+            assign fec_seq = 1'b0;
             wire unused_seq = &{1'b0, seq_rd_x, seq_rd_y, seq_rd_pin, rest_len};
         end
     endgenerate
@@ -268,7 +313,7 @@ module strand_top #(
             wire init_we = phase == PH_INIT && init_u == U_ID;
             wire seq_we  = seq_wr_en && seq_wr_u == U_ID;
             node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
-                        .EN_MOUSE(EN_MOUSE)) u_unit (
+                        .EN_MOUSE(EN_MOUSE), .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .verlet_done(done_all[u]),
                 .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .damping(damping), .impulse(impulse),
@@ -283,6 +328,16 @@ module strand_top #(
     endgenerate
 
     assign fv = &done_all;
+
+    // ---- FEC, from the sequencer ----
+`ifdef STRAND_FAULT_DELAY
+    // Test only (the harness's planted-fault check): FEC one cycle late.
+    reg fec_late;
+    always @(posedge clk) fec_late <= reset ? 1'b0 : fec_seq;
+    assign fec = fec_late;
+`else
+    assign fec = fec_seq;
+`endif
 
 endmodule
 

@@ -45,8 +45,16 @@ module toward #(
     output reg          valid   // 0: zero length, no direction
 );
 
+    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
+    // $fatal for the simulators (Icarus carries on after $error).
     initial begin
-        if (W < 8 || W > 32) $error("toward: W must be 8..32 (W=%0d) in %m", W);
+        if (W < 8 || W > 32) begin
+`ifdef SYNTHESIS
+            $error("toward: W must be 8..32 (W=%0d) in %m", W);
+`else
+            $fatal(1, "toward: W must be 8..32 (W=%0d) in %m", W);
+`endif
+        end
     end
 
     localparam [2:0] S_IDLE = 3'd0, // waiting for start
@@ -93,7 +101,7 @@ module toward #(
 
     // ---- square root and divider ----
     wire         sqrt_start = state_q == S_SQY;
-    wire [2*W-1:0] radicand = sq_q + mul_exact; // both squares are < 2^(2W-2): no overflow
+    wire [2*W-1:0] radicand = sq_q + mul_exact; // each square <= 2^(2W-2), so the sum fits 2W bits
     wire         sqrt_done, div_done, div_zero;
     wire [W-1:0] root, quot;
     /* verilator lint_off PINCONNECTEMPTY */

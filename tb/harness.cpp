@@ -1,0 +1,445 @@
+// harness.cpp - the RTL and the cycle model in lockstep, every output, every cycle.
+//
+// Drives clk, reset, the scene's register writes, the scripted mouse and step on
+// the Verilated sim_top (strand_top built for one scene) and on the C cycle model
+// (model/cycle.c), edge for edge, and compares every output of strand_top in every
+// cycle. The first mismatch prints the cycle, each differing signal with both
+// values, the phase and the indices, saves an FST trace of the run up to that
+// cycle (the run is deterministic, so it is replayed with tracing on), and exits 1.
+//
+// Between the scripted events the inputs are noise from a seed: the mouse changes
+// at arbitrary cycles (mid-frame and during reset; only the value present when a
+// frame starts may matter), the read port address changes every cycle, and random
+// idle gaps separate setup writes and frames.
+//
+// usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
+//                [--expect-fault flip|delay] [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]
+
+#include <chrono>
+#include <cinttypes>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "Vsim_top.h"
+#include "verilated.h"
+#include "verilated_fst_c.h"
+
+#include "cycle.h"
+#include "engine.h"
+#include "hwgen.h"
+#include "params.h"
+#include "render.h"
+#include "scene.h"
+#include "strand_regs.h"
+
+namespace {
+
+struct Options {
+    std::string scene, trace, csv, png, expect;
+    int frames = -1;
+    uint64_t seed = 1;
+    bool quiet = false;
+    long stop_at = -1; // replay: stop after this cycle
+};
+
+// splitmix64: the stimulus noise, reproducible from --seed
+struct Rng {
+    uint64_t s;
+    uint64_t next() {
+        uint64_t z = (s += 0x9e3779b97f4a7c15ull);
+        z = (z ^ (z >> 30)) * 0xbf58476d1ce4e5b9ull;
+        z = (z ^ (z >> 27)) * 0x94d049bb133111ebull;
+        return z ^ (z >> 31);
+    }
+    uint32_t below(uint32_t n) { return n ? (uint32_t)(next() % n) : 0; }
+};
+
+// Words wider than 64 bits (the write-back buses) are VlWide arrays of 32-bit words.
+template <typename T> uint32_t lane(const T &bus, int lane_index, int width) {
+    uint32_t out = 0;
+    for (int b = 0; b < width; b++) {
+        int bit = lane_index * width + b;
+        uint32_t v;
+        if constexpr (sizeof(T) <= 8) v = (uint32_t)((uint64_t)bus >> bit) & 1u;
+        else v = (bus[bit / 32] >> (bit % 32)) & 1u;
+        out |= v << b;
+    }
+    return out;
+}
+
+struct Error {
+    double sum2 = 0, worst = 0, stretch = 0;
+    long samples = 0;
+};
+
+struct Result {
+    Error err;
+    bool ok = true;
+    long cycles = 0, mismatch_cycle = -1, first_frame_cycle = -1;
+    int frames = 0;
+    long frame_cycles_min = -1, frame_cycles_max = -1;
+    uint64_t digest = 1469598103934665603ull; // FNV-1a over every output of every cycle
+    long predicted_fault = -1;                // --expect-fault: the cycle the fault must show at
+    std::vector<std::vector<double>> final_pos;
+};
+
+class Run {
+  public:
+    Run(const Options &o, const scene &sc, int argc, char **argv, bool trace, long stop_at)
+        : o_(o), sc_(sc), stop_at_(stop_at) {
+        hw_params_of(&sc, &hp_);
+        ctx_ = std::make_unique<VerilatedContext>();
+        ctx_->commandArgs(argc, argv); // +verilator+rand+reset+2 +verilator+seed+N
+        top_ = std::make_unique<Vsim_top>(ctx_.get());
+        if (trace) {
+            ctx_->traceEverOn(true);
+            tfp_ = std::make_unique<VerilatedFstC>();
+            top_->trace(tfp_.get(), 99);
+            tfp_->open(o.trace.c_str());
+        }
+        cyc_init(&model_, &hp_);
+        rng_.s = o.seed;
+        mask_ = hp_.w == 32 ? 0xffffffffu : (1u << hp_.w) - 1;
+    }
+    ~Run() {
+        if (tfp_) tfp_->close();
+        top_->final();
+        cyc_free(&model_);
+    }
+
+    Result go(int frames);
+
+  private:
+    // One cycle: present the inputs, compare the outputs, then the rising edge on both sides.
+    bool cycle(const cyc_inputs &in);
+    bool compare();
+    // fixed point (the RTL's, through the model) against double, at a frame end
+    void dbl_err(const sim_dbl &dbl) {
+        double scale = stats_length_scale(&sc_);
+        std::vector<double> p((size_t)sc_.n_nodes * 3, 0.0);
+        for (int i = 0; i < sc_.n_nodes; i++) {
+            double e2 = 0;
+            for (int a = 0; a < 2; a++) {
+                double v = fx_to_double(&sc_.fmt, model_.s.pos[i][a]);
+                p[(size_t)i * 3 + (size_t)a] = v;
+                e2 += (v - dbl.pos[i][a]) * (v - dbl.pos[i][a]);
+            }
+            r_.err.sum2 += e2 / (scale * scale);
+            r_.err.samples++;
+            r_.err.worst = std::fmax(r_.err.worst, std::sqrt(e2) / scale);
+        }
+        r_.err.stretch = std::fmax(r_.err.stretch, stats_max_stretch(&sc_, reinterpret_cast<double (*)[3]>(p.data())));
+    }
+    void noise(cyc_inputs &in) {
+        in.mouse_x = (uint32_t)rng_.next() & mask_;
+        in.mouse_y = (uint32_t)rng_.next() & mask_;
+        in.mouse_down = rng_.below(2);
+        // mostly valid node addresses, sometimes any address
+        uint32_t node = rng_.below((uint32_t)(hp_.m * hp_.k));
+        in.rd_addr = rng_.below(8) ? hw_node_addr(&hp_, (int)node) : rng_.below(1u << (hp_.uw + hp_.iw));
+    }
+
+    const Options &o_;
+    const scene &sc_;
+    hw_params hp_;
+    std::unique_ptr<VerilatedContext> ctx_;
+    std::unique_ptr<Vsim_top> top_;
+    std::unique_ptr<VerilatedFstC> tfp_;
+    cyc_model model_;
+    Rng rng_;
+    uint32_t mask_;
+    long stop_at_;
+    long cyc_ = 0;       // cycles run (edges)
+    bool compared_ = false; // outputs are compared from the first edge with reset on
+    Result r_;
+    int fault_writes_ = 0;
+    bool last_edge_verlet_ = false;
+};
+
+bool Run::compare() {
+    cyc_outputs m;
+    cyc_get_outputs(&model_, &m);
+    struct Sig { std::string name; uint64_t rtl, model; };
+    std::vector<Sig> sigs = {
+        {"frame_done", top_->frame_done, m.frame_done}, {"rd_x", top_->rd_x, m.rd_x}, {"rd_y", top_->rd_y, m.rd_y},
+        {"phase", top_->phase, (uint64_t)m.phase}, {"fv", top_->fv, m.fv}, {"fec", top_->fec, m.fec},
+        {"uidx", top_->uidx, m.uidx}, {"nidx", top_->nidx, m.nidx}, {"counter", top_->counter, m.counter},
+    };
+    for (int u = 0; u < hp_.m; u++) {
+        std::string l = "[" + std::to_string(u) + "]";
+        sigs.push_back({"wb_valid" + l, lane(top_->wb_valid, u, 1), m.wb_valid[u]});
+        sigs.push_back({"wb_idx" + l, lane(top_->wb_idx, u, hp_.iw), m.wb_idx[u]});
+        sigs.push_back({"wb_x" + l, lane(top_->wb_x, u, hp_.w), m.wb_x[u]});
+        sigs.push_back({"wb_y" + l, lane(top_->wb_y, u, hp_.w), m.wb_y[u]});
+    }
+    bool ok = true;
+    for (const Sig &s : sigs) {
+        for (int b = 0; b < 8; b++) r_.digest = (r_.digest ^ ((s.rtl >> (8 * b)) & 0xff)) * 1099511628211ull;
+        if (s.rtl != s.model) {
+            if (ok && !o_.quiet)
+                std::printf("MISMATCH cycle %ld (phase %d, uidx %u, nidx %u, counter %u)\n", cyc_, m.phase, m.uidx, m.nidx,
+                            m.counter);
+            if (!o_.quiet)
+                std::printf("MISMATCH cycle %ld signal %s: rtl=0x%0*" PRIx64 " model=0x%0*" PRIx64 "\n", cyc_, s.name.c_str(),
+                            (hp_.w + 3) / 4, s.rtl, (hp_.w + 3) / 4, s.model);
+            ok = false;
+        }
+    }
+    return ok;
+}
+
+bool Run::cycle(const cyc_inputs &in) {
+    top_->reset = in.reset;
+    top_->mouse_x = in.mouse_x;
+    top_->mouse_y = in.mouse_y;
+    top_->mouse_down = in.mouse_down;
+    top_->step = in.step;
+    top_->cfg_we = in.cfg_we;
+    top_->cfg_addr = in.cfg_addr;
+    top_->cfg_data = in.cfg_data;
+    top_->rd_addr = in.rd_addr;
+    top_->clk = 0;
+    top_->eval();
+    if (tfp_) tfp_->dump((uint64_t)(2 * cyc_));
+    // the expected place of a planted fault, predicted from the model
+    if (o_.expect == "flip" && r_.predicted_fault < 0) {
+        cyc_outputs m;
+        cyc_get_outputs(&model_, &m);
+        if (m.wb_valid[0] && last_edge_verlet_ && ++fault_writes_ == 5) r_.predicted_fault = cyc_;
+    }
+    if (o_.expect == "delay" && r_.predicted_fault < 0) {
+        cyc_outputs m;
+        cyc_get_outputs(&model_, &m);
+        if (m.fec) r_.predicted_fault = cyc_;
+    }
+    if (compared_ && !compare()) {
+        r_.ok = false;
+        r_.mismatch_cycle = cyc_;
+        return false;
+    }
+    last_edge_verlet_ = model_.running && !in.reset;
+    top_->clk = 1;
+    top_->eval();
+    if (tfp_) tfp_->dump((uint64_t)(2 * cyc_ + 1));
+    cyc_edge(&model_, &in);
+    cyc_++;
+    if (in.reset) compared_ = true; // from the first reset edge on, nothing is left to chance
+    return stop_at_ < 0 || cyc_ <= stop_at_;
+}
+
+Result Run::go(int frames) {
+    cyc_inputs in{};
+    // Reset, with noise on every other input (all of it must be ignored).
+    int reset_cycles = 2 + (int)rng_.below(4);
+    for (int i = 0; i < reset_cycles; i++) {
+        noise(in);
+        in.reset = true;
+        in.step = rng_.below(2);
+        in.cfg_we = rng_.below(2);
+        in.cfg_addr = rng_.below(1u << STRAND_REG_ADDR_BITS);
+        in.cfg_data = (uint32_t)rng_.next() & mask_;
+        if (!cycle(in)) return r_;
+    }
+    in = cyc_inputs{};
+
+    // The setup writes, with random idle gaps.
+    std::vector<hw_write> writes(4096 + 16);
+    {
+        sim_fx tmp;
+        sim_fx_init(&tmp, &sc_, &sc_.fmt);
+        writes.resize((size_t)hw_setup_writes(&sc_, &tmp, writes.data(), (int)writes.size()));
+        sim_fx_free(&tmp);
+    }
+    for (const hw_write &w : writes) {
+        for (uint32_t g = rng_.below(3); g > 0; g--) {
+            noise(in);
+            in.cfg_we = false;
+            if (!cycle(in)) return r_;
+        }
+        noise(in);
+        in.cfg_we = true;
+        in.cfg_addr = (uint32_t)w.addr;
+        in.cfg_data = w.data;
+        if (!cycle(in)) return r_;
+    }
+    in.cfg_we = false;
+    do {
+        noise(in);
+        if (!cycle(in)) return r_;
+    } while (model_.phase != PH_IDLE);
+
+    // The frames: the scripted mouse when a frame starts, noise otherwise.
+    sim_dbl dbl;
+    sim_dbl_init(&dbl, &sc_, nullptr);
+    int n = sc_.n_nodes;
+    for (int f = 0; f < frames; f++) {
+        for (uint32_t g = rng_.below(4); g > 0; g--) {
+            noise(in);
+            if (!cycle(in)) return r_;
+        }
+        double m[3];
+        bool down;
+        scene_mouse_at(&sc_, f, m, &down);
+        noise(in);
+        in.mouse_x = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[0]));
+        in.mouse_y = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[1]));
+        in.mouse_down = sc_.en_mouse && down;
+        in.step = true;
+        long start = cyc_;
+        if (r_.first_frame_cycle < 0) r_.first_frame_cycle = cyc_;
+        if (!cycle(in)) return r_;
+        in.step = false;
+        cyc_outputs out;
+        do {
+            noise(in);
+            if (!cycle(in)) return r_;
+            cyc_get_outputs(&model_, &out);
+        } while (!out.frame_done);
+        long len = cyc_ - start;
+        if (r_.frame_cycles_min < 0 || len < r_.frame_cycles_min) r_.frame_cycles_min = len;
+        if (len > r_.frame_cycles_max) r_.frame_cycles_max = len;
+        r_.frames = f + 1;
+        sim_dbl_frame(&dbl);
+        std::vector<double> frame_pos;
+        for (int i = 0; i < n; i++)
+            for (int a = 0; a < 2; a++) frame_pos.push_back(fx_to_double(&sc_.fmt, model_.s.pos[i][a]));
+        r_.final_pos.push_back(frame_pos);
+        if (r_.final_pos.size() > 1 && o_.csv.empty()) r_.final_pos.erase(r_.final_pos.begin());
+        dbl_err(dbl);
+    }
+    sim_dbl_free(&dbl);
+    r_.cycles = cyc_;
+    return r_;
+}
+
+}  // namespace
+
+static int usage(const char *why) {
+    if (why) std::fprintf(stderr, "harness: %s\n", why);
+    std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
+                         "               [--expect-fault flip|delay] [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]\n");
+    return 2;
+}
+
+int main(int argc, char **argv) {
+    Options o;
+    for (int i = 1; i < argc; i++) {
+        std::string a = argv[i];
+        auto value = [&](const char *name) -> const char * {
+            if (i + 1 >= argc) {
+                std::fprintf(stderr, "harness: %s needs a value\n", name);
+                std::exit(2);
+            }
+            return argv[++i];
+        };
+        if (a == "--frames") o.frames = std::atoi(value("--frames"));
+        else if (a == "--seed") o.seed = std::strtoull(value("--seed"), nullptr, 0);
+        else if (a == "--trace") o.trace = value("--trace");
+        else if (a == "--csv") o.csv = value("--csv");
+        else if (a == "--png") o.png = value("--png");
+        else if (a == "--expect-fault") o.expect = value("--expect-fault");
+        else if (a == "--quiet") o.quiet = true;
+        else if (a == "--help") return usage(nullptr), 0;
+        else if (a[0] == '+') continue; // Verilator's plusargs
+        else if (a[0] == '-') return usage(("unknown option " + a).c_str());
+        else if (o.scene.empty()) o.scene = a;
+        else return usage(("unexpected argument " + a).c_str());
+    }
+    if (o.scene.empty()) return usage("no SCENE given");
+    if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay") return usage("--expect-fault takes flip or delay");
+
+    scene sc;
+    char err[SCENE_ERR_LEN];
+    if (!scene_load(&sc, o.scene.c_str(), err)) {
+        std::fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    if (hw_check(&sc, err, sizeof err)) {
+        std::fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    hw_params hp;
+    hw_params_of(&sc, &hp);
+    const int built[] = {STRAND_W, STRAND_F, STRAND_M, STRAND_K, STRAND_SQRT_BITS, STRAND_DIV_BITS, STRAND_ITER, STRAND_SUBSTEPS,
+                         STRAND_EN_GRAVITY, STRAND_EN_DAMPING, STRAND_EN_MOUSE, STRAND_EN_CONSTRAINTS};
+    const int wanted[] = {hp.w, hp.f, hp.m, hp.k, hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps,
+                          hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints};
+    if (std::memcmp(built, wanted, sizeof built) != 0) {
+        std::fprintf(stderr, "%s:1: this harness was built for another scene's parameters; build it for this one (make sim SCENE=%s)\n",
+                     sc.path, sc.path);
+        return 2;
+    }
+    int frames = o.frames >= 0 ? o.frames : sc.frames;
+
+    auto t0 = std::chrono::steady_clock::now();
+    Result r;
+    {
+        Run run(o, sc, argc, argv, !o.trace.empty(), -1);
+        r = run.go(frames);
+    }
+    double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+
+    if (!r.ok) {
+        std::string fst = o.trace.empty() ? "mismatch.fst" : o.trace;
+        if (o.trace.empty()) { // replay the same run with tracing on, up to just past the mismatch
+            Options ot = o;
+            ot.trace = fst;
+            ot.quiet = true;
+            Run replay(ot, sc, argc, argv, true, r.mismatch_cycle + 2);
+            replay.go(frames);
+        }
+        if (!o.expect.empty()) {
+            bool right = r.mismatch_cycle == r.predicted_fault;
+            std::printf("%s planted fault '%s': first mismatch at cycle %ld, expected at cycle %ld\n", right ? "PASS" : "FAIL",
+                        o.expect.c_str(), r.mismatch_cycle, r.predicted_fault);
+            scene_free(&sc);
+            return right ? 0 : 1;
+        }
+        std::printf("FAIL lockstep %s seed %" PRIu64 ": mismatch at cycle %ld; trace in %s\n", sc.name, o.seed, r.mismatch_cycle,
+                    fst.c_str());
+        scene_free(&sc);
+        return 1;
+    }
+    if (!o.expect.empty()) {
+        std::printf("FAIL planted fault '%s' was not caught (expected at cycle %ld)\n", o.expect.c_str(), r.predicted_fault);
+        scene_free(&sc);
+        return 1;
+    }
+
+    if (!o.csv.empty()) {
+        FILE *f = std::fopen((o.csv + ".tmp").c_str(), "w");
+        if (f) {
+            std::fprintf(f, "frame,node,x,y\n");
+            for (size_t fr = 0; fr < r.final_pos.size(); fr++)
+                for (int i = 0; i < sc.n_nodes; i++)
+                    std::fprintf(f, "%zu,%d,%.9g,%.9g\n", fr + 1, i, r.final_pos[fr][(size_t)2 * i], r.final_pos[fr][(size_t)2 * i + 1]);
+            if (std::fclose(f) == 0) std::rename((o.csv + ".tmp").c_str(), o.csv.c_str());
+        }
+    }
+    if (!o.png.empty() && !r.final_pos.empty()) {
+        render_view view;
+        std::vector<double> p((size_t)sc.n_nodes * 3, 0.0);
+        const std::vector<double> &last = r.final_pos.back();
+        for (int i = 0; i < sc.n_nodes; i++) p[(size_t)3 * i] = last[(size_t)2 * i], p[(size_t)3 * i + 1] = last[(size_t)2 * i + 1];
+        render_view_fit(&view, &sc, frames);
+        render_png(&sc, &view, reinterpret_cast<double (*)[3]>(p.data()), frames, o.png.c_str());
+    }
+    double rms = r.err.samples ? std::sqrt(r.err.sum2 / (double)r.err.samples) : 0;
+    std::printf("PASS lockstep %s seed %" PRIu64 ": %d frames, %ld cycles, every output equal in every cycle\n", sc.name, o.seed,
+                r.frames, r.cycles);
+    if (!o.quiet) {
+        std::printf("  cycles per frame      %ld%s\n", r.frame_cycles_max,
+                    r.frame_cycles_min == r.frame_cycles_max ? "" : " (varies: a bug)");
+        std::printf("  simulated cycles/s    %.0f (RTL and model in lockstep)\n", (double)r.cycles / secs);
+        std::printf("  max stretch           %.4f %%\n", r.err.stretch);
+        std::printf("  error against double  rms %.3g, max %.3g rest lengths\n", rms, r.err.worst);
+        std::printf("  output digest         %016" PRIx64 "\n", r.digest);
+    }
+    scene_free(&sc);
+    return 0;
+}
