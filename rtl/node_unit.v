@@ -32,7 +32,7 @@ module node_unit #(
     parameter [0:0]  EN_DAMPING = 1'b0,  // Verlet damping v -= v * d (two multipliers)
     parameter [0:0]  EN_MOUSE = 1'b1,  // reference-000 mouse impulse
     /* verilator lint_off UNUSEDPARAM */
-    // read only by the test-only planted fault (STRAND_FAULT_FLIP)
+    // read only by the test-only planted fault (STRAND_FAULTS)
     parameter integer UNIT_ID  = 0      // this unit's number
     /* verilator lint_on UNUSEDPARAM */
 ) (
@@ -229,14 +229,16 @@ module node_unit #(
     wire          pass_we = running_q && !q_pin;
     wire          we      = pass_we || w_en;
     wire [IW-1:0] widx    = running_q ? vidx_q : w_idx;
-`ifdef STRAND_FAULT_FLIP
-    // Test only (the harness's planted-fault check): bit 0 of x is flipped in the
-    // fifth Verlet write of unit 0 after reset.
+`ifdef STRAND_FAULTS
+    // Test only (the harness's planted-fault check): with +fault_flip, bit 0 of x is
+    // flipped in the fifth Verlet write of unit 0 after reset.
+    reg fault_on;
+    initial fault_on = $test$plusargs("fault_flip");
     reg [2:0] fault_writes;
     always @(posedge clk)
         if (reset) fault_writes <= 3'd0;
         else if (pass_we && fault_writes != 3'd7) fault_writes <= fault_writes + 1'b1;
-    wire fault_flip = UNIT_ID == 0 && pass_we && fault_writes == 3'd4;
+    wire fault_flip = fault_on && UNIT_ID == 0 && pass_we && fault_writes == 3'd4;
     wire [W-1:0]  wx      = running_q ? nx ^ {{(W-1){1'b0}}, fault_flip} : w_x;
 `else
     wire [W-1:0]  wx      = running_q ? nx : w_x;

@@ -330,11 +330,13 @@ module strand_top #(
     assign fv = &done_all;
 
     // ---- FEC, from the sequencer ----
-`ifdef STRAND_FAULT_DELAY
-    // Test only (the harness's planted-fault check): FEC one cycle late.
+`ifdef STRAND_FAULTS
+    // Test only (the harness's planted-fault check): with +fault_delay, FEC one cycle late.
+    reg fault_on;
+    initial fault_on = $test$plusargs("fault_delay");
     reg fec_late;
     always @(posedge clk) fec_late <= reset ? 1'b0 : fec_seq;
-    assign fec = fec_late;
+    assign fec = fault_on ? fec_late : fec_seq;
 `else
     assign fec = fec_seq;
 `endif

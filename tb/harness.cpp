@@ -14,6 +14,10 @@
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
 //                [--expect-fault flip|delay] [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]
+//
+// --expect-fault needs a build with +define+STRAND_FAULTS and the matching plusarg
+// (+fault_flip or +fault_delay): it passes only if the first mismatch is at the
+// cycle the model predicts for that fault.
 
 #include <chrono>
 #include <cinttypes>
@@ -164,31 +168,38 @@ class Run {
 bool Run::compare() {
     cyc_outputs m;
     cyc_get_outputs(&model_, &m);
-    struct Sig { std::string name; uint64_t rtl, model; };
-    std::vector<Sig> sigs = {
-        {"frame_done", top_->frame_done, m.frame_done}, {"rd_x", top_->rd_x, m.rd_x}, {"rd_y", top_->rd_y, m.rd_y},
-        {"phase", top_->phase, (uint64_t)m.phase}, {"fv", top_->fv, m.fv}, {"fec", top_->fec, m.fec},
-        {"uidx", top_->uidx, m.uidx}, {"nidx", top_->nidx, m.nidx}, {"counter", top_->counter, m.counter},
-    };
+    // (name, rtl, model) of every output; names are only formatted on a mismatch
+    uint64_t rtl[9 + 4 * CYC_MAX_UNITS], mod[9 + 4 * CYC_MAX_UNITS];
+    int n = 0;
+    auto put = [&](uint64_t a, uint64_t b) { rtl[n] = a, mod[n++] = b; };
+    put(top_->frame_done, m.frame_done);
+    put(top_->rd_x, m.rd_x);
+    put(top_->rd_y, m.rd_y);
+    put(top_->phase, (uint64_t)m.phase);
+    put(top_->fv, m.fv);
+    put(top_->fec, m.fec);
+    put(top_->uidx, m.uidx);
+    put(top_->nidx, m.nidx);
+    put(top_->counter, m.counter);
     for (int u = 0; u < hp_.m; u++) {
-        std::string l = "[" + std::to_string(u) + "]";
-        sigs.push_back({"wb_valid" + l, lane(top_->wb_valid, u, 1), m.wb_valid[u]});
-        sigs.push_back({"wb_idx" + l, lane(top_->wb_idx, u, hp_.iw), m.wb_idx[u]});
-        sigs.push_back({"wb_x" + l, lane(top_->wb_x, u, hp_.w), m.wb_x[u]});
-        sigs.push_back({"wb_y" + l, lane(top_->wb_y, u, hp_.w), m.wb_y[u]});
+        put(lane(top_->wb_valid, u, 1), m.wb_valid[u]);
+        put(lane(top_->wb_idx, u, hp_.iw), m.wb_idx[u]);
+        put(lane(top_->wb_x, u, hp_.w), m.wb_x[u]);
+        put(lane(top_->wb_y, u, hp_.w), m.wb_y[u]);
     }
     bool ok = true;
-    for (const Sig &s : sigs) {
-        for (int b = 0; b < 8; b++) r_.digest = (r_.digest ^ ((s.rtl >> (8 * b)) & 0xff)) * 1099511628211ull;
-        if (s.rtl != s.model) {
-            if (ok && !o_.quiet)
-                std::printf("MISMATCH cycle %ld (phase %d, uidx %u, nidx %u, counter %u)\n", cyc_, m.phase, m.uidx, m.nidx,
-                            m.counter);
-            if (!o_.quiet)
-                std::printf("MISMATCH cycle %ld signal %s: rtl=0x%0*" PRIx64 " model=0x%0*" PRIx64 "\n", cyc_, s.name.c_str(),
-                            (hp_.w + 3) / 4, s.rtl, (hp_.w + 3) / 4, s.model);
-            ok = false;
-        }
+    for (int i = 0; i < n; i++) {
+        r_.digest = (r_.digest ^ rtl[i]) * 1099511628211ull;
+        if (rtl[i] == mod[i]) continue;
+        static const char *const names[] = {"frame_done", "rd_x", "rd_y", "phase", "fv", "fec", "uidx", "nidx", "counter"};
+        static const char *const lanes[] = {"wb_valid", "wb_idx", "wb_x", "wb_y"};
+        std::string name = i < 9 ? names[i] : std::string(lanes[(i - 9) % 4]) + "[" + std::to_string((i - 9) / 4) + "]";
+        if (ok && !o_.quiet)
+            std::printf("MISMATCH cycle %ld (phase %d, uidx %u, nidx %u, counter %u)\n", cyc_, m.phase, m.uidx, m.nidx, m.counter);
+        if (!o_.quiet)
+            std::printf("MISMATCH cycle %ld signal %s: rtl=0x%0*" PRIx64 " model=0x%0*" PRIx64 "\n", cyc_, name.c_str(),
+                        (hp_.w + 3) / 4, rtl[i], (hp_.w + 3) / 4, mod[i]);
+        ok = false;
     }
     return ok;
 }
