@@ -105,18 +105,29 @@ module fx_div #(
     wire [W-1:0] acc_init = num >> (M - FS);            // floor(num * 2^F / 2^M)
     wire [M-1:0] low_bits = num[M-1:0] << FS;           // dividend bits M-1 .. 0
 
-    // One iteration (datapath, from the registers).
-    wire [W:0]     t      = {acc_q, x_q[XB-1]};           // 2*acc + next bit
-    wire [W+1:0]   diff   = {1'b0, t} - {2'b00, den_q};
-    wire           ge     = !diff[W+1];                   // t >= den
-    wire [NIT-1:0] q_next = {q_q[NIT-2:0], ge};
-
-    // Final rounding and clamping, used on the last iteration.
-    wire [DB:0]    rounded = {1'b0, q_next[NIT-1:1]} + {{DB{1'b0}}, q_next[0]};
-    wire           clamp   = big_q | rounded[DB];
-    wire [W-1:0]   quot    = {{(W-DB){1'b0}}, rounded[DB-1:0]} << LSB;
+    // Combinational values, computed at the top of the next-state block (one
+    // block rather than a chain of assigns keeps event-driven simulation fast).
+    reg [W:0]     t;       // 2*acc + next dividend bit
+    reg [W+1:0]   diff;    // t - den, borrow in the top bit
+    reg           ge;      // t >= den: the new quotient bit
+    reg [NIT-1:0] q_next;  // quotient bits after this iteration
+    reg [DB:0]    rounded; // last iteration: truncated quotient + rounding bit
+    reg           clamp;   // last iteration: the quotient does not fit
+    reg [W-1:0]   quot;    // last iteration: rounded quotient in place
 
     always @* begin
+        // One iteration, from the registers.
+        t       = {acc_q, x_q[XB-1]};
+        diff    = {1'b0, t} - {2'b00, den_q};
+        ge      = !diff[W+1];
+        q_next  = {q_q[NIT-2:0], ge};
+        // Rounding and clamping, used on the last iteration.
+        rounded = {1'b0, q_next[NIT-1:1]} + {{DB{1'b0}}, q_next[0]};
+        clamp   = big_q | rounded[DB];
+        quot    = {{(W-DB){1'b0}}, rounded[DB-1:0]} << LSB;
+
+        // Next state: hold by default.
+
         busy_d    = busy_q;
         done_d    = 1'b0;
         cnt_d     = cnt_q;

@@ -93,20 +93,33 @@ module fx_sqrt #(
     reg [W-1:0]   result_q, result_d;
     reg           sat_q, sat_d;
 
-    // One iteration (datapath, from the registers).
-    wire [TW-1:0] ac_in  = {ac_q, x_q[XW-1 -: 2]};           // 4*ac + next two bits
-    wire [TW-1:0] trial  = {q_q, 2'b01};                      // 4*q + 1 (q_q[NIT-1] is 0 here)
-    wire [TW:0]   diff   = {1'b0, ac_in} - {1'b0, trial};
-    wire          ge     = !diff[TW];                          // ac_in >= trial
-    wire [NIT-1:0] q_next = {q_q[NIT-2:0], ge};
-
-    // Final rounding and clamping, used on the last iteration.
-    wire [SB:0]        rounded = {1'b0, q_next[NIT-1:1]} + {{SB{1'b0}}, q_next[0]};
-    wire               clamp   = big_q | rounded[SB];
-    wire [W-1:0]       root    = {{(W-SB){1'b0}}, rounded[SB-1:0]} << LSB;
     localparam [W-1:0] ROOT_MAX = {1'b0, {(W-1){1'b1}}};
 
+    // Combinational values, computed at the top of the next-state block (one
+    // block rather than a chain of assigns keeps event-driven simulation fast).
+    reg [TW-1:0]  ac_in;   // 4*ac + next two radicand bits
+    reg [TW-1:0]  trial;   // 4*q + 1
+    reg [TW:0]    diff;    // ac_in - trial, borrow in the top bit
+    reg           ge;      // ac_in >= trial: the new root bit
+    reg [NIT-1:0] q_next;  // root bits after this iteration
+    reg [SB:0]    rounded; // last iteration: truncated root + rounding bit
+    reg           clamp;   // last iteration: the root does not fit
+    reg [W-1:0]   root;    // last iteration: rounded root in place
+
     always @* begin
+        // One iteration, from the registers (q_q[NIT-1] is still 0 here).
+        ac_in   = {ac_q, x_q[XW-1 -: 2]};
+        trial   = {q_q, 2'b01};
+        diff    = {1'b0, ac_in} - {1'b0, trial};
+        ge      = !diff[TW];
+        q_next  = {q_q[NIT-2:0], ge};
+        // Rounding and clamping, used on the last iteration.
+        rounded = {1'b0, q_next[NIT-1:1]} + {{SB{1'b0}}, q_next[0]};
+        clamp   = big_q | rounded[SB];
+        root    = {{(W-SB){1'b0}}, rounded[SB-1:0]} << LSB;
+
+        // Next state: hold by default.
+
         busy_d   = busy_q;
         done_d   = 1'b0;
         cnt_d    = cnt_q;
