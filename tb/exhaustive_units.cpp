@@ -225,10 +225,11 @@ void run_sqrt()
     std::printf("PASS exhaustive_w%d_fx_sqrt (%ld vectors)\n", W, n);
 }
 
-void run_div()
+// Every den for num in [num_lo, num_hi); part names the PASS line.
+void run_div(uint64_t num_lo, uint64_t num_hi, const char* part)
 {
     long n = 0;
-    for (uint64_t un = 0; un <= WMASK; un++) {
+    for (uint64_t un = num_lo; un < num_hi; un++) {
         top->num = un;
         for (uint64_t d0 = 0; d0 <= WMASK; d0 += L) {
             for (int j = 0; j < L; j++) setf(top->den, j * W, W, (d0 + j) & WMASK);
@@ -251,7 +252,7 @@ void run_div()
             }
         }
     }
-    std::printf("PASS exhaustive_w%d_fx_div (%ld vectors)\n", W, n);
+    std::printf("PASS exhaustive_w%d_fx_div%s (%ld vectors)\n", W, part, n);
 }
 
 } // namespace
@@ -276,21 +277,26 @@ int main(int argc, char** argv)
     }
     top->reset = 0;
     if (top->sqrt_busy || top->sqrt_done || top->div_busy || top->div_done) fail("reset", "busy or done set after reset");
-    // Optional arguments choose the parts to run (comb, sqrt, div), so that the
-    // make recipe can run them in parallel; none means all.
-    bool want_comb = argc < 2, want_sqrt = argc < 2, want_div = argc < 2;
+    // Optional arguments choose the parts to run (comb, sqrt, div, or div0 and
+    // div1: the lower and upper half of the numerators), so that the make recipe
+    // can run them in parallel; none means all.
+    bool want_comb = argc < 2, want_sqrt = argc < 2, want_div = argc < 2, want_div0 = false, want_div1 = false;
     for (int i = 1; i < argc; i++) {
         const std::string arg = argv[i];
         if (arg == "comb") want_comb = true;
         else if (arg == "sqrt") want_sqrt = true;
         else if (arg == "div") want_div = true;
-        else if (arg[0] != '+') fail("args", "arguments are comb, sqrt, div");
+        else if (arg == "div0") want_div0 = true;
+        else if (arg == "div1") want_div1 = true;
+        else if (arg[0] != '+') fail("args", "arguments are comb, sqrt, div, div0, div1");
     }
     if (want_comb) run_comb();
     tick_sqrt = true;
     if (want_sqrt) run_sqrt();
     tick_sqrt = false;
-    if (want_div) run_div();
+    if (want_div) run_div(0, WMASK + 1, "");
+    if (want_div0 && !want_div) run_div(0, (WMASK + 1) / 2, "_num_lower_half");
+    if (want_div1 && !want_div) run_div((WMASK + 1) / 2, WMASK + 1, "_num_upper_half");
     top->final();
     return 0;
 }

@@ -12,7 +12,7 @@
 #     W=8, edge values plus fixed-seed random ones at W=18 and W=32, including
 #     reduced SQRT_BITS/DIV_BITS;
 #   - the Verilator test tb/exhaustive_units.cpp: every operand at W=12 against
-#     model/fixed.c called directly (its two halves run in parallel).
+#     model/fixed.c called directly (in three parallel processes).
 # Each test prints "PASS <name> (<N> vectors)" or "FAIL <name>: ..."; a recipe fails
 # on a FAIL line, a non-zero exit, a timeout, or a missing PASS line.
 # All variables are prefixed UNITS_ (BUILD is shared with the top Makefile).
@@ -128,11 +128,14 @@ $(UNITS_EXH_BIN): $(UNITS_EXH_SRC) $(UNITS_ROOT)/model/fixed.h
 	    -Mdir $(UNITS_EXH_DIR) -o exhaustive_units $(UNITS_EXH_SRC) > $(UNITS_EXH_DIR)/build.log 2>&1 \
 	    || { cat $(UNITS_EXH_DIR)/build.log; exit 1; }
 
-# The combinational units and the square root in one process, the divider in another.
+# Three processes: the combinational units and the square root; the divider for
+# the lower half of the numerators; the upper half.
 units-verilator: $(UNITS_EXH_BIN)
 	@( $(call UNITS_JUDGE,$(UNITS_EXH_BIN) comb sqrt,$(UNITS_EXH_DIR)/run_a.log,exhaustive_w12_comb_sqrt,5) ) & pa=$$!; \
-	( $(call UNITS_JUDGE,$(UNITS_EXH_BIN) div,$(UNITS_EXH_DIR)/run_b.log,exhaustive_w12_div,1) ) & pb=$$!; \
-	ra=0; rb=0; wait $$pa || ra=$$?; wait $$pb || rb=$$?; [ $$ra -eq 0 ] && [ $$rb -eq 0 ]
+	( $(call UNITS_JUDGE,$(UNITS_EXH_BIN) div0,$(UNITS_EXH_DIR)/run_b.log,exhaustive_w12_div_lower,1) ) & pb=$$!; \
+	( $(call UNITS_JUDGE,$(UNITS_EXH_BIN) div1,$(UNITS_EXH_DIR)/run_c.log,exhaustive_w12_div_upper,1) ) & pc=$$!; \
+	ra=0; rb=0; rc=0; wait $$pa || ra=$$?; wait $$pb || rb=$$?; wait $$pc || rc=$$?; \
+	[ $$ra -eq 0 ] && [ $$rb -eq 0 ] && [ $$rc -eq 0 ]
 
 # Lint: every unit with default and with edge parameters, no warnings at all.
 UNITS_LINT_PARAMS_add  := "" "-GW=8"
