@@ -39,13 +39,17 @@ LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model run test test-model test-scenes test-rtl-frames lint lint-c lint-rtl clean
+.PHONY: help bootstrap model run sim wave test test-model test-scenes test-rtl-frames test-lockstep lockstep-fuzz \
+        lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
 help:
 	@echo "Strand make targets:"
 	@echo "  make test        install what is missing, then run every test (ends with 'N passed, N failed')"
+	@echo "  make sim [SCENE=...] [WAVES=1]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/)"
+	@echo "  make wave [SCENE=...]  run make sim with WAVES=1 and open GTKWave on the trace"
 	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
+	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=4]  random scenes in lockstep; a failure prints its seed"
 	@echo "  make model       build the C model library and the CLI, $(STRAND)"
 	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
@@ -80,6 +84,28 @@ run: bootstrap
 	$(STRAND) run $(SCENE) --csv $(RUN_DIR)/positions.csv --png $(RUN_DIR)/frames
 	$(STRAND) compare $(SCENE)
 	@echo "positions: $(RUN_DIR)/positions.csv   pictures: $(RUN_DIR)/frames/"
+
+# ---- the RTL in lockstep with the cycle model (Verilator) ----
+
+sim: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@scripts/sim.sh $(SCENE) $(if $(WAVES),--waves)
+
+wave: bootstrap
+	@$(MAKE) --no-print-directory -s sim WAVES=1
+	@if [ "$(SCENE)" = "sim/scenes/ref000_rope.scene" ]; then save=sim/strand.gtkw; else save=$(BUILD)/sim/$(basename $(notdir $(SCENE)))/strand.gtkw; fi; \
+	  echo "gtkwave $$save"; gtkwave --dump=$(BUILD)/sim/$(basename $(notdir $(SCENE)))/waves.fst --save=$$save
+
+# make test: the RTL test scenes, the planted faults, random initial values, 50 random scenes
+test-lockstep: $(STRAND) $(GEN_HDRS)
+	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(RTL_SCENES),--scene $(s)) --faults --reset-seeds 3
+
+N ?= 200
+SEED ?= 1
+BUILDS ?= 4
+lockstep-fuzz: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@python3 scripts/lockstep_fuzz.py $(N) --seed $(SEED) --builds $(BUILDS)
 
 # ---- C unit tests (cmocka) ----
 
@@ -121,7 +147,7 @@ lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 
 # ---- everything ----
 
-TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames
+TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep
 
 test: bootstrap
 	@scripts/run_tests.sh $(TEST_STEPS)

@@ -1,0 +1,233 @@
+#!/usr/bin/env python3
+"""lockstep_fuzz.py - random scenes in lockstep: the RTL against the cycle model.
+
+    lockstep_fuzz.py N [--seed S] [--builds B] [--jobs J] [--scene FILE ...] [--faults] [--reset-seeds K]
+    lockstep_fuzz.py --replay SEED [--seed S] [--builds B]
+
+Every scene is drawn from a seed: its build (W, F, M, K, SQRT_BITS, DIV_BITS, ITER,
+SUBSTEPS and the EN_* effects), its constants (start, step, rest length, gravity,
+damping, pins), its mouse script and its length, all within what the RTL supports.
+A Verilator build costs about a minute, so scenes share builds: the three builds of
+the RTL test scenes and B more drawn from --seed. Each scene runs through the
+harness with its own stimulus seed and random initial values
+(+verilator+rand+reset+2). A failure prints the scene's seed; --replay SEED runs that
+one scene again (the scene file is kept in build/fuzz/).
+
+--scene FILE runs a given scene (its whole length) too; --faults builds the RTL
+with its planted faults and checks that each is reported at the cycle the model
+predicts; --reset-seeds K runs the first --scene with K random-initialisation seeds
+and checks that every output of every cycle is the same as with zeros.
+Harnesses live in build/vl/b_<hash of the build>, shared by every run.
+"""
+import argparse
+import concurrent.futures
+import hashlib
+import os
+import random
+import subprocess
+import sys
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.environ.get("BUILD", "build")
+FIXED_BUILDS = ["sim/scenes/ref000_rope.scene", "tb/scenes/chain_q10_8.scene", "tb/scenes/chain_k4_bits.scene"]
+BUILD_KEYS = ["width", "frac", "units", "nodes_per_unit", "sqrt_bits", "div_bits", "iterations", "substeps",
+              "gravity", "damping", "mouse", "constraints"]
+
+
+def read_build(path):
+    """The build parameters of one of the fixed scenes (from its text)."""
+    b = {"sqrt_bits": None, "div_bits": None, "iterations": 1, "substeps": 1, "frac": 16, "width": 32,
+         "gravity": False, "damping": False, "mouse": False, "constraints": False}
+    section = None
+    for line in open(os.path.join(ROOT, path)):
+        line = line.split(";")[0].strip()
+        if line.startswith("["):
+            section = line.strip("[]")
+            if section in ("gravity", "mouse", "constraints"):
+                b[section] = True
+        elif "=" in line:
+            key, value = [t.strip() for t in line.split("=", 1)]
+            if key in ("width", "frac", "sqrt_bits", "div_bits", "iterations", "substeps", "units", "nodes_per_unit"):
+                b[key] = int(value)
+            if key == "damping":
+                b["damping"] = float(value) > 0
+    b["sqrt_bits"] = b["sqrt_bits"] or b["width"] - 1
+    b["div_bits"] = b["div_bits"] or b["width"] - 1
+    return b
+
+
+def random_build(rng):
+    w = rng.choice([12, 16, 18, 20, 24, 32])
+    f = rng.randint(max(2, w // 3), w - 5)
+    return {"width": w, "frac": f, "units": rng.randint(1, 4), "nodes_per_unit": rng.randint(1, 6),
+            "sqrt_bits": rng.randint(max(3, w // 2), w - 1), "div_bits": rng.randint(max(3, w // 2), w - 1),
+            "iterations": rng.randint(1, 3), "substeps": rng.randint(1, 2),
+            "gravity": rng.random() < 0.8, "damping": rng.random() < 0.4, "mouse": rng.random() < 0.7,
+            "constraints": rng.random() < 0.85}
+
+
+def builds_for(seed, extra):
+    rng = random.Random(f"builds-{seed}")
+    return [read_build(p) for p in FIXED_BUILDS] + [random_build(rng) for _ in range(extra)]
+
+
+def scene_text(build, seed):
+    """A valid scene for `build`, its run-time values drawn from `seed`."""
+    rng = random.Random(f"scene-{seed}")
+    w, f = build["width"], build["frac"]
+    span = 2.0 ** (w - f - 1)           # the format's range is +-span
+    lsb = 2.0 ** -f
+    n = build["units"] * build["nodes_per_unit"]
+    reach = span / 4                    # keep the body well inside the range
+    step = [rng.uniform(-1, 1) * reach / max(n, 1) for _ in range(2)]
+    if rng.random() < 0.1:
+        step = [0.0, 0.0]               # every node on one point: zero lengths
+    start = [rng.uniform(-reach, reach) - step[0] * n / 2, rng.uniform(-reach, reach) - step[1] * n / 2]
+    rest = max(abs(step[0]) + abs(step[1]), 64 * lsb) * rng.uniform(0.5, 1.6)
+    frames = rng.randint(3, 10)
+    lines = [f"; random scene, seed {seed}", "[scene]", f"name = fuzz_{seed}",
+             "[format]", f"width = {w}", f"frac = {f}", f"sqrt_bits = {build['sqrt_bits']}", f"div_bits = {build['div_bits']}",
+             "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['substeps']}", f"iterations = {build['iterations']}"]
+    if build["damping"]:
+        lines.append(f"damping = {rng.uniform(lsb * 4, 0.3):.6f}")
+    lines += ["[chain]", f"units = {build['units']}", f"nodes_per_unit = {build['nodes_per_unit']}",
+              f"start = {start[0]:.6f} {start[1]:.6f}", f"step = {step[0]:.6f} {step[1]:.6f}", f"rest = {rest:.6f}"]
+    pins = sorted(rng.sample(range(n), rng.randint(0, min(3, n))))
+    if pins:
+        lines.append("pinned = " + " ".join(map(str, pins)))
+    if build["gravity"]:
+        g = rng.uniform(0, reach / 50) * build["substeps"] ** 2
+        lines += ["[gravity]", f"accel = {rng.uniform(-0.3, 0.3) * g:.6f} {-g:.6f}"]
+    if build["constraints"]:
+        lines += ["[constraints]", "rule = centred"]
+    if build["mouse"]:
+        box = min(rng.uniform(rest, 4 * rest + 8 * lsb), reach)
+        lines += ["[mouse]", f"box = {box:.6f} {box:.6f}", f"impulse = {rng.uniform(-rest, rest):.6f}"]
+        frame = 0
+        while frame < frames:
+            x = rng.uniform(-reach, reach)
+            y = rng.uniform(-reach, reach)
+            if rng.random() < 0.5 and n:         # aim at a node's start
+                i = rng.randrange(n)
+                x, y = start[0] + i * step[0], start[1] + i * step[1]
+            lines.append(f"event = {frame} {x:.6f} {y:.6f} {rng.randint(0, 1)}")
+            frame += rng.randint(1, 3)
+    return "\n".join(lines) + "\n"
+
+
+def build_key(build):
+    return hashlib.sha1(repr([build[k] for k in BUILD_KEYS]).encode()).hexdigest()[:10]
+
+
+def harness_dir(build, defines=""):
+    return os.path.join(BUILD, "vl", "b_" + build_key(build) + ("_faults" if defines else ""))
+
+
+def run(cmd):
+    p = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+    return p.returncode, p.stdout
+
+
+def main():
+    ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
+    ap.add_argument("n", nargs="?", type=int, default=50, help="scenes to run")
+    ap.add_argument("--seed", type=int, default=1, help="base seed (scene i has seed base*100000 + i)")
+    ap.add_argument("--builds", type=int, default=2, help="random builds beside the three fixed ones")
+    ap.add_argument("--jobs", type=int, default=2)
+    ap.add_argument("--replay", type=int, help="run the one scene with this seed")
+    ap.add_argument("--scene", action="append", default=[], help="also run this scene, its whole length")
+    ap.add_argument("--harness-for", metavar="SCENE", help="build (if needed) the harness for SCENE's build, print its path")
+    ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
+    ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
+    a = ap.parse_args()
+
+    if a.harness_for:
+        build = read_build(a.harness_for)
+        rc, out = run(["scripts/build_harness.sh", a.harness_for, harness_dir(build)])
+        if rc != 0:
+            sys.stderr.write(out)
+            return 1
+        print(os.path.join(harness_dir(build), "harness"))
+        return 0
+
+    builds = builds_for(a.seed, a.builds)
+    seeds = [a.replay] if a.replay is not None else [a.seed * 100000 + i for i in range(a.n)]
+    fuzz = os.path.join(BUILD, "fuzz")
+    os.makedirs(os.path.join(ROOT, fuzz), exist_ok=True)
+    jobs = []   # (label, harness args, build, defines)
+    for path in a.scene:
+        jobs.append((f"scene {path}", [path], read_build(path), ""))
+    if a.reset_seeds and a.scene:
+        for k in range(a.reset_seeds):
+            jobs.append((f"reset-seed {k + 1}", [a.scene[0], "--frames", "20", "+verilator+rand+reset+2",
+                                                  f"+verilator+seed+{k + 1}"], read_build(a.scene[0]), ""))
+        jobs.append(("reset-zero", [a.scene[0], "--frames", "20"], read_build(a.scene[0]), ""))
+    if a.faults:
+        fs = "tb/scenes/chain_q10_8.scene"
+        for kind in ("flip", "delay"):
+            jobs.append((f"fault {kind}", [fs, "--quiet", "--expect-fault", kind, f"+fault_{kind}"], read_build(fs),
+                         "+define+STRAND_FAULTS"))
+    for s in seeds:
+        build = builds[s % len(builds)]
+        path = os.path.join(fuzz, f"seed_{s}.scene")
+        with open(os.path.join(ROOT, path), "w") as fh:
+            fh.write(scene_text(build, s))
+        jobs.append((f"fuzz seed {s}", [path, "--quiet", "--seed", str(s), "+verilator+rand+reset+2",
+                                        f"+verilator+seed+{s % 100000 + 1}"], build, ""))
+
+    # one harness per build (cached by build_harness.sh), built two at a time
+    needed = {}
+    for label, args, build, defines in jobs:
+        needed.setdefault((build_key(build), defines), (args[0], build))
+    def make(item):
+        (key, defines), (path, build) = item
+        cmd = ["scripts/build_harness.sh", path, harness_dir(build, defines)] + ([defines] if defines else [])
+        return key, run(cmd)
+    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
+        for key, (rc, out) in ex.map(make, needed.items()):
+            if rc != 0:
+                print(out)
+                print(f"FAIL lockstep: the harness for build {key} did not build")
+                return 1
+
+    def one(job):
+        label, args, build, defines = job
+        harness = os.path.abspath(os.path.join(ROOT, harness_dir(build, defines), "harness"))
+        workdir = os.path.join(ROOT, BUILD, "fuzz")  # where a failing run leaves mismatch.fst
+        p = subprocess.run([harness] + [os.path.join(ROOT, x) if x.endswith(".scene") else x for x in args], cwd=workdir,
+                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
+        return job, p.returncode, p.stdout
+
+    failed = 0
+    digests = {}
+    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
+        for (label, args, build, defines), rc, out in ex.map(one, jobs):
+            lines = [l for l in out.splitlines() if l.startswith(("PASS", "FAIL", "MISMATCH"))]
+            digest = [l.split()[-1] for l in out.splitlines() if "output digest" in l]
+            if label.startswith("reset-"):
+                digests[label] = digest[0] if digest else None
+                if rc != 0:
+                    failed += 1
+                    print("\n".join(lines) or out)
+                continue
+            if rc == 0:
+                print(lines[-1] if lines else f"PASS {label}")
+            else:
+                failed += 1
+                print("\n".join(lines[:12]) or out)
+                if label.startswith("fuzz seed"):
+                    s = label.split()[-1]
+                    print(f"FAIL lockstep {label} ({args[0]}): replay with "
+                          f"'scripts/lockstep_fuzz.py --replay {s} --seed {a.seed} --builds {a.builds}'")
+                else:
+                    print(f"FAIL lockstep {label}")
+    if digests:
+        same = len(set(digests.values())) == 1 and None not in digests.values()
+        print(("PASS" if same else "FAIL") + f" reset defines everything: {len(digests) - 1} random-initialisation seeds and "
+              f"zeros give {'the same' if same else 'different'} outputs in every cycle ({digests.get('reset-zero')})")
+        failed += 0 if same else 1
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())

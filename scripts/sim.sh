@@ -1,0 +1,26 @@
+#!/usr/bin/env bash
+# sim.sh SCENE [--waves] - the main job: SCENE on the RTL in lockstep with the C model.
+#
+# Builds strand_top with exactly the scene's parameters and effects (cached), runs
+# it cycle for cycle against the cycle model, and writes into build/sim/<scene>/:
+# positions.csv (every frame end), final.png (the last frame), and with --waves an
+# FST trace and a GTKWave save file for it.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+scene=$1
+waves=${2:-}
+build=${BUILD:-build}
+name=$(basename "$scene" .scene)
+out=$build/sim/$name
+"$build/strand" check "$scene" >/dev/null   # a bad scene stops here, with file:line
+mkdir -p "$out"
+echo "building strand_top for $scene (Verilator; cached once built)..."
+harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene")
+args=(--csv "$out/positions.csv" --png "$out/final.png")
+if [ "$waves" = "--waves" ]; then
+  "$build/strand" hwgen "$scene" "$out.gen" --frames 1
+  python3 scripts/gtkw.py "$out.gen/params.vh" "$out/strand.gtkw" waves.fst
+  args+=(--trace "$out/waves.fst")
+fi
+"$harness" "$scene" "${args[@]}"
+echo "positions: $out/positions.csv   picture: $out/final.png${waves:+   trace: $out/waves.fst}"
