@@ -1,0 +1,44 @@
+# tb/synth.mk - synthesis figures of strand_top (Yosys, nextpnr-ice40).
+#
+# Included by the top Makefile; also works alone from the repository root:
+#     make -f tb/synth.mk synth             # regenerate docs/resources.md
+#     make -f tb/synth.mk test-synth-check  # 4x5 generic synth, check -assert, no latches
+#
+# synth: three builds of strand_top at Q16.16 (4x5, 8x8 and 16x16 nodes) through
+# generic `synth`, synth_ice40 -dsp (and nextpnr-ice40 for the UP5K), synth_ecp5 and
+# synth_xilinx, SYNTH_JOBS at a time; then docs/resources.md is rewritten from the
+# results. Raw logs and netlists stay in $(BUILD)/synth/<build>/; a flow whose RTL,
+# generated header and commands are unchanged is not run again. A latch or a failed
+# `check -assert` fails the target; a build that does not fit the UP5K does not.
+# test-synth-check prints one line, "PASS synth-check (...)" or "FAIL synth-check: ...".
+# All variables are prefixed SYNTH_ (BUILD, GEN, TOP_SRC and JOBS come from the top
+# Makefile when it includes this file).
+
+SYNTH_SAVED_GOAL := $(.DEFAULT_GOAL)
+
+BUILD ?= build
+SYNTH_GEN  := $(if $(GEN),$(GEN),$(BUILD)/gen)
+SYNTH_DIR  := $(BUILD)/synth
+SYNTH_SRC  := $(if $(TOP_SRC),$(TOP_SRC),rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/toward.v \
+              rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v)
+SYNTH_JOBS ?= $(if $(JOBS),$(JOBS),2)
+SYNTH_PY   := python3 scripts/synth.py
+SYNTH_DOC  := docs/resources.md
+
+.PHONY: synth test-synth-check
+
+# The generated register map the top includes (the top Makefile has the same rule).
+ifeq ($(GEN_HDRS),)
+$(SYNTH_GEN)/strand_regs.vh: scripts/gen_regs.py
+	python3 scripts/gen_regs.py $(SYNTH_GEN)
+endif
+
+# The script decides per flow whether its cached result is still good.
+synth: $(SYNTH_GEN)/strand_regs.vh
+	@$(SYNTH_PY) all --build $(SYNTH_DIR) --gen $(SYNTH_GEN) --jobs $(SYNTH_JOBS) --out $(SYNTH_DOC) $(SYNTH_SRC)
+
+test-synth-check: $(SYNTH_GEN)/strand_regs.vh
+	@$(SYNTH_PY) check --build $(SYNTH_DIR) --gen $(SYNTH_GEN) $(SYNTH_SRC)
+
+# Including this file does not change the default goal.
+.DEFAULT_GOAL := $(SYNTH_SAVED_GOAL)
