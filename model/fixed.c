@@ -1,8 +1,10 @@
 /*
  * fixed.c - the iterative units of fixed.h, written as the hardware runs them:
  * one result bit per loop iteration, most significant first, with the partial
- * remainder kept as an integer. Widths: radicand and dividend < 2^62, so all
- * intermediates fit a uint64_t for W <= 32.
+ * remainder kept as an integer. Widths: a radicand is any 2W-bit value (up to
+ * 2^64 - 1 at W = 32), but one of 2^(2W-2) or more saturates before the loop, so
+ * the loop's remainder and trial terms stay below 2^62; a dividend is below 2^62.
+ * Callers pass magnitudes below 2^W (the RTL sees only W bits).
  */
 #include "fixed.h"
 
