@@ -241,6 +241,17 @@ static void check_json(const char *name, const char *check, const scene *sc, con
         for (int i = 0; i < k; i++) first += v[i], lastv += v[np - 1 - i];
         first /= k > 0 ? k : 1;
         lastv /= k > 0 ? k : 1;
+        /* the decay rate of the swing's energy over the first 60 s: least squares of ln(peak) */
+        {
+            double sx = 0, sy = 0, sxx = 0, sxy = 0;
+            int m = 0;
+            for (int i = 0; i < np && t[i] <= 60.0; i++)
+                if (v[i] > 0) {
+                    sx += t[i], sy += log(v[i]), sxx += t[i] * t[i], sxy += t[i] * log(v[i]);
+                    m++;
+                }
+            json_num("loss_rate_60s", m >= 3 ? -(m * sxy - sx * sy) / (m * sxx - sx * sx) : NAN, 0);
+        }
         json_num("height_first", first, 0);
         json_num("height_last", lastv, 0);
         json_num("swings", np, 0);
