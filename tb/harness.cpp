@@ -13,7 +13,13 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay] [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]
+//                [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--quiet]
+//                [+verilator+rand+reset+2 +verilator+seed+N]
+//
+// --mode rtl runs the RTL alone and --mode model the cycle model alone, on the same
+// stimulus (for make bench). --resets N asserts reset at N random cycles in the
+// middle of frames; the run then writes the setup again and starts the scene over,
+// and the RTL and the model must go on agreeing.
 //
 // --expect-fault needs a build with +define+STRAND_FAULTS and the matching plusarg
 // (+fault_flip or +fault_delay): it passes only if the first mismatch is at the
@@ -45,6 +51,8 @@ namespace {
 
 struct Options {
     std::string scene, trace, csv, png, expect;
+    std::string mode = "lockstep"; // lockstep | rtl (the RTL alone) | model (the cycle model alone)
+    int resets = 0;                // resets at random cycles during the frames
     int frames = -1;
     uint64_t seed = 1;
     bool quiet = false;
@@ -63,17 +71,19 @@ struct Rng {
     uint32_t below(uint32_t n) { return n ? (uint32_t)(next() % n) : 0; }
 };
 
-// Words wider than 64 bits (the write-back buses) are VlWide arrays of 32-bit words.
+// One lane of a bus: `width` bits at lane_index * width. Buses wider than 64 bits
+// are VlWide arrays of 32-bit words; a lane of up to 32 bits spans at most two.
 template <typename T> uint32_t lane(const T &bus, int lane_index, int width) {
-    uint32_t out = 0;
-    for (int b = 0; b < width; b++) {
-        int bit = lane_index * width + b;
-        uint32_t v;
-        if constexpr (sizeof(T) <= 8) v = (uint32_t)((uint64_t)bus >> bit) & 1u;
-        else v = (bus[bit / 32] >> (bit % 32)) & 1u;
-        out |= v << b;
+    const uint64_t mask = width == 32 ? 0xffffffffull : (1ull << width) - 1;
+    const int off = lane_index * width;
+    if constexpr (sizeof(T) <= 8) {
+        return (uint32_t)(((uint64_t)bus >> off) & mask);
+    } else {
+        const int word = off / 32, shift = off % 32;
+        uint64_t v = bus[word];
+        if (word + 1 < (int)(sizeof(T) / 4)) v |= (uint64_t)bus[word + 1] << 32;
+        return (uint32_t)((v >> shift) & mask);
     }
-    return out;
 }
 
 struct Error {
@@ -89,6 +99,7 @@ struct Result {
     long frame_cycles_min = -1, frame_cycles_max = -1;
     uint64_t digest = 1469598103934665603ull; // FNV-1a over every output of every cycle
     long predicted_fault = -1;                // --expect-fault: the cycle the fault must show at
+    int resets = 0;                           // random resets applied
     std::vector<std::vector<double>> final_pos;
 };
 
@@ -108,6 +119,9 @@ class Run {
         }
         cyc_init(&model_, &hp_);
         rng_.s = o.seed;
+        rtl_on_ = o.mode != "model";
+        model_on_ = o.mode != "rtl";
+        resets_left_ = o.resets;
         mask_ = hp_.w == 32 ? 0xffffffffu : (1u << hp_.w) - 1;
     }
     ~Run() {
@@ -163,6 +177,16 @@ class Run {
     Result r_;
     int fault_writes_ = 0;
     bool last_edge_verlet_ = false;
+    bool rtl_on_ = true, model_on_ = true;
+    long reset_at_ = -1; // the cycle of the next random reset, -1 for none
+    int resets_left_ = 0;
+    // What the stimulus waits on, from whichever side runs (they are equal in lockstep).
+    int phase() const { return model_on_ ? model_.phase : (int)top_->phase; }
+    bool frame_done() const { return model_on_ ? model_.frame_done : (bool)top_->frame_done; }
+    bool setup(cyc_inputs &in);
+    void plan_reset() {
+        reset_at_ = resets_left_-- > 0 ? cyc_ + 1 + (long)rng_.below(40000) : -1;
+    }
 };
 
 bool Run::compare() {
@@ -214,8 +238,10 @@ bool Run::cycle(const cyc_inputs &in) {
     top_->cfg_addr = in.cfg_addr;
     top_->cfg_data = in.cfg_data;
     top_->rd_addr = in.rd_addr;
-    top_->clk = 0;
-    top_->eval();
+    if (rtl_on_) {
+        top_->clk = 0;
+        top_->eval();
+    }
     if (tfp_) tfp_->dump((uint64_t)(2 * cyc_));
     // the expected place of a planted fault, predicted from the model
     if (o_.expect == "flip" && r_.predicted_fault < 0) {
@@ -228,25 +254,27 @@ bool Run::cycle(const cyc_inputs &in) {
         cyc_get_outputs(&model_, &m);
         if (m.fec) r_.predicted_fault = cyc_;
     }
-    if (compared_ && !compare()) {
+    if (compared_ && rtl_on_ && model_on_ && !compare()) {
         r_.ok = false;
         r_.mismatch_cycle = cyc_;
         return false;
     }
     last_edge_verlet_ = model_.running && !in.reset;
-    top_->clk = 1;
-    top_->eval();
+    if (rtl_on_) {
+        top_->clk = 1;
+        top_->eval();
+    }
     if (tfp_) tfp_->dump((uint64_t)(2 * cyc_ + 1));
-    cyc_edge(&model_, &in);
+    if (model_on_) cyc_edge(&model_, &in);
     cyc_++;
     if (in.reset) compared_ = true; // from the first reset edge on, nothing is left to chance
     return stop_at_ < 0 || cyc_ <= stop_at_;
 }
 
-Result Run::go(int frames) {
-    cyc_inputs in{};
-    // Reset, with noise on every other input (all of it must be ignored).
-    int reset_cycles = 2 + (int)rng_.below(4);
+// Reset with noise on every other input (all of it must be ignored), then the
+// setup writes with random idle gaps, then the init walk. False if the run must stop.
+bool Run::setup(cyc_inputs &in) {
+    int reset_cycles = 1 + (int)rng_.below(4);
     for (int i = 0; i < reset_cycles; i++) {
         noise(in);
         in.reset = true;
@@ -254,11 +282,9 @@ Result Run::go(int frames) {
         in.cfg_we = rng_.below(2);
         in.cfg_addr = rng_.below(1u << STRAND_REG_ADDR_BITS);
         in.cfg_data = (uint32_t)rng_.next() & mask_;
-        if (!cycle(in)) return r_;
+        if (!cycle(in)) return false;
     }
     in = cyc_inputs{};
-
-    // The setup writes, with random idle gaps.
     std::vector<hw_write> writes(4096 + 16);
     {
         sim_fx tmp;
@@ -270,32 +296,42 @@ Result Run::go(int frames) {
         for (uint32_t g = rng_.below(3); g > 0; g--) {
             noise(in);
             in.cfg_we = false;
-            if (!cycle(in)) return r_;
+            if (!cycle(in)) return false;
         }
         noise(in);
         in.cfg_we = true;
         in.cfg_addr = (uint32_t)w.addr;
         in.cfg_data = w.data;
-        if (!cycle(in)) return r_;
+        if (!cycle(in)) return false;
     }
     in.cfg_we = false;
     do {
         noise(in);
-        if (!cycle(in)) return r_;
-    } while (model_.phase != PH_IDLE);
+        if (!cycle(in)) return false;
+    } while (phase() != PH_IDLE);
+    return true;
+}
 
-    // The frames: the scripted mouse when a frame starts, noise otherwise.
+Result Run::go(int frames) {
+    cyc_inputs in{};
+    if (!setup(in)) return r_;
+    plan_reset();
+
+    // The frames: the scripted mouse when a frame starts, noise otherwise. A random
+    // reset (--resets) interrupts a frame; the setup is written again and the run
+    // goes on from the scene's start, model and RTL alike.
     sim_dbl dbl;
     sim_dbl_init(&dbl, &sc_, nullptr);
     int n = sc_.n_nodes;
-    for (int f = 0; f < frames; f++) {
+    for (int f = 0, scene_frame = 0; f < frames; f++, scene_frame++) {
+        bool interrupted = false;
         for (uint32_t g = rng_.below(4); g > 0; g--) {
             noise(in);
             if (!cycle(in)) return r_;
         }
         double m[3];
         bool down;
-        scene_mouse_at(&sc_, f, m, &down);
+        scene_mouse_at(&sc_, scene_frame, m, &down);
         noise(in);
         in.mouse_x = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[0]));
         in.mouse_y = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[1]));
@@ -305,16 +341,28 @@ Result Run::go(int frames) {
         if (r_.first_frame_cycle < 0) r_.first_frame_cycle = cyc_;
         if (!cycle(in)) return r_;
         in.step = false;
-        cyc_outputs out;
         do {
             noise(in);
+            if (reset_at_ >= 0 && cyc_ >= reset_at_) { // a reset in the middle of a frame
+                r_.resets++;
+                if (!setup(in)) return r_;
+                plan_reset();
+                interrupted = true;
+                break;
+            }
             if (!cycle(in)) return r_;
-            cyc_get_outputs(&model_, &out);
-        } while (!out.frame_done);
+        } while (!frame_done());
+        if (interrupted) { // start the scene again, in the model and in the double reference
+            scene_frame = -1;
+            sim_dbl_free(&dbl);
+            sim_dbl_init(&dbl, &sc_, nullptr);
+            continue;
+        }
         long len = cyc_ - start;
         if (r_.frame_cycles_min < 0 || len < r_.frame_cycles_min) r_.frame_cycles_min = len;
         if (len > r_.frame_cycles_max) r_.frame_cycles_max = len;
         r_.frames = f + 1;
+        if (!model_on_) continue;
         sim_dbl_frame(&dbl);
         std::vector<double> frame_pos;
         for (int i = 0; i < n; i++)
@@ -333,7 +381,8 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay] [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]\n");
+                         "               [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--quiet]\n"
+                         "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
 }
 
@@ -355,6 +404,8 @@ int main(int argc, char **argv) {
         else if (a == "--png") o.png = value("--png");
         else if (a == "--expect-fault") o.expect = value("--expect-fault");
         else if (a == "--quiet") o.quiet = true;
+        else if (a == "--mode") o.mode = value("--mode");
+        else if (a == "--resets") o.resets = std::atoi(value("--resets"));
         else if (a == "--help") return usage(nullptr), 0;
         else if (a[0] == '+') continue; // Verilator's plusargs
         else if (a[0] == '-') return usage(("unknown option " + a).c_str());
@@ -363,6 +414,7 @@ int main(int argc, char **argv) {
     }
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay") return usage("--expect-fault takes flip or delay");
+    if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
 
     scene sc;
     char err[SCENE_ERR_LEN];
@@ -441,8 +493,15 @@ int main(int argc, char **argv) {
         render_png(&sc, &view, reinterpret_cast<double (*)[3]>(p.data()), frames, o.png.c_str());
     }
     double rms = r.err.samples ? std::sqrt(r.err.sum2 / (double)r.err.samples) : 0;
-    std::printf("PASS lockstep %s seed %" PRIu64 ": %d frames, %ld cycles, every output equal in every cycle\n", sc.name, o.seed,
-                r.frames, r.cycles);
+    if (o.mode != "lockstep") {
+        std::printf("%s alone %s: %d frames, %ld cycles (nothing compared)\n", o.mode == "rtl" ? "RTL" : "cycle model", sc.name,
+                    r.frames, r.cycles);
+        std::printf("  simulated cycles/s    %.0f\n", (double)r.cycles / secs);
+        scene_free(&sc);
+        return 0;
+    }
+    std::printf("PASS lockstep %s seed %" PRIu64 ": %d frames, %ld cycles%s, every output equal in every cycle\n", sc.name, o.seed,
+                r.frames, r.cycles, r.resets ? (", " + std::to_string(r.resets) + " random resets").c_str() : "");
     if (!o.quiet) {
         std::printf("  cycles per frame      %ld%s\n", r.frame_cycles_max,
                     r.frame_cycles_min == r.frame_cycles_max ? "" : " (varies: a bug)");
