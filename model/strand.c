@@ -19,6 +19,7 @@
 #include "hwgen.h"
 #include "render.h"
 #include "scene.h"
+#include "stability_bound.h"
 
 #define EXIT_BAD_INPUT 2
 
@@ -26,7 +27,7 @@ static const char *usage_main =
     "usage: strand COMMAND [OPTIONS] SCENE\n"
     "\n"
     "Commands:\n"
-    "  check SCENE      validate a scene and print a one-line summary\n"
+    "  check SCENE      validate a scene; print a summary and its stability bound\n"
     "  run SCENE        run a scene and print frames, stretch, energy and drift\n"
     "  compare SCENE    run fixed point and double side by side and print the error\n"
     "  hwgen SCENE DIR  write the RTL parameters, setup writes, mouse script and expected\n"
@@ -34,8 +35,12 @@ static const char *usage_main =
     "\n"
     "'strand COMMAND --help' describes each command's options.\n";
 
-static const char *usage_check = "usage: strand check SCENE\n"
-                                 "Validate SCENE; print its summary, or 'file:line: message' and exit 2.\n";
+static const char *usage_check =
+    "usage: strand check SCENE [--auto-substeps MAX]\n"
+    "Validate SCENE; print its summary and its stability bound, or 'file:line: message'\n"
+    "and exit 2. A scene whose springs cross the bound gets a warning on stderr.\n"
+    "  --auto-substeps MAX  also print the fewest substeps (up to MAX) that meet the bound\n"
+    "                       with a safety factor of 2 on the step\n";
 
 static const char *usage_run =
     "usage: strand run SCENE [--frames N] [--format fixed|double] [--csv FILE] [--hex FILE] [--png DIR]\n"
@@ -44,11 +49,14 @@ static const char *usage_run =
     "  --csv FILE       positions at every frame end: frame,node,x,y[,z]\n"
     "  --hex FILE       fixed only: raw positions at every frame end, one node per line,\n"
     "                   x y [z] as W-bit hex words (testbench vectors)\n"
-    "  --png DIR        one picture per frame, DIR/frame_00001.png ...\n";
+    "  --png DIR        one picture per frame, DIR/frame_00001.png ...\n"
+    "  --auto-substeps MAX  run with the fewest substeps (up to MAX) that meet the springs'\n"
+    "                   stability bound with a safety factor of 2 on the step\n";
 
-static const char *usage_compare = "usage: strand compare SCENE [--frames N]\n"
+static const char *usage_compare = "usage: strand compare SCENE [--frames N] [--auto-substeps MAX]\n"
                                    "Run the scene in fixed point and in double; print the RMS and largest position\n"
-                                   "error (in rest lengths) and the largest stretch of each.\n";
+                                   "error (in rest lengths) and the largest stretch of each.\n"
+                                   "  --auto-substeps MAX  as for 'strand run'\n";
 
 static const char *usage_hwgen = "usage: strand hwgen SCENE DIR [--frames N]\n"
                                  "Write DIR/params.vh, config.hex, mouse.hex and expected.hex: what the RTL build\n"
@@ -77,6 +85,7 @@ typedef struct {
     int frames;       /* -1: the scene's */
     int format;       /* -1: the scene's */
     const char *csv, *hex, *png;
+    int auto_substeps; /* 0: off; else the most substeps --auto-substeps may pick */
     bool help;
 } options;
 
@@ -86,6 +95,7 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
     static const struct option longopts[] = {
         {"frames", required_argument, 0, 'f'}, {"format", required_argument, 0, 'F'}, {"csv", required_argument, 0, 'c'},
         {"hex", required_argument, 0, 'x'},    {"png", required_argument, 0, 'p'},    {"help", no_argument, 0, 'h'},
+        {"auto-substeps", required_argument, 0, 'a'},
         {0, 0, 0, 0},
     };
     int c;
@@ -122,6 +132,12 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
                 return NULL;
             }
             break;
+        case 'a':
+            if (!parse_count(optarg, &o->auto_substeps) || o->auto_substeps < 1 || o->auto_substeps > SCENE_MAX_SUBSTEPS) {
+                *rc = bad_arg(cmd, "--auto-substeps: '%s' is not a substep count (1..4096)", optarg);
+                return NULL;
+            }
+            break;
         case 'c': o->csv = optarg; break;
         case 'x': o->hex = optarg; break;
         case 'p': o->png = optarg; break;
@@ -155,13 +171,59 @@ static const char *format_name(number_kind kind, const fx_format *fmt, char *buf
     return buf;
 }
 
+/* ---- the stability bound (stability_bound.h, docs/stability.md) ---- */
+
+/* Warn on stderr, at the [springs] line, when the scene's step crosses the bound. */
+static void warn_bound(const scene *sc)
+{
+    stab_bound b = stab_compute(sc, 0);
+    if (!b.springs || b.index < 1) return;
+    fprintf(stderr, "%s:%d: warning: the springs cross the stability bound at h = dt/%d = %.4g: h*omega = %.3g (limit 2), "
+                    "h*kd/m = %.3g, index %.3g (limit 1)",
+            sc->path, scene_section_line(sc, "springs"), sc->substeps, b.h, b.h_omega, b.h_kd_m, b.index);
+    if (b.h_max > 0) fprintf(stderr, "; stable below h = %.4g, %d substeps or more; see --auto-substeps\n", b.h_max, (int)ceil(sc->dt / b.h_max));
+    else fprintf(stderr, "; no step is stable%s\n", sc->integrator == INTEGRATOR_EULER ? " for explicit Euler without a damper" : "");
+}
+
+static void print_bound(const scene *sc)
+{
+    stab_bound b = stab_compute(sc, 0);
+    if (!b.springs) {
+        printf("stability: no springs: constraints, gravity, mouse and ground have no step limit\n");
+        return;
+    }
+    printf("stability: %s, %d springs at a node: omega = %.4g, h*omega = %.4g, h*kd/m = %.4g, index %.4g (%s below 1), ",
+           sc->integrator == INTEGRATOR_EULER ? "euler" : "verlet", b.max_degree, b.omega, b.h_omega, b.h_kd_m, b.index,
+           b.index < 1 ? "stable" : "UNSTABLE, must be");
+    if (isinf(b.h_max)) printf("no step limit\n");
+    else if (b.h_max > 0) printf("largest stable h %.4g\n", b.h_max);
+    else printf("no stable step\n");
+}
+
+/* --auto-substeps: set the scene's substeps; false after reporting (exit 2) if none up to max will do. */
+static bool apply_auto_substeps(const char *cmd, scene *sc, int max)
+{
+    int s = stab_auto_substeps(sc, max), was = sc->substeps;
+    stab_bound b;
+    if (s == 0) {
+        fprintf(stderr, "%s:%d: strand %s --auto-substeps %d: no substep count up to %d meets the stability bound with a safety factor of %g\n",
+                sc->path, scene_section_line(sc, "springs"), cmd, max, max, STAB_SAFETY);
+        return false;
+    }
+    stab_set_substeps(sc, s);
+    b = stab_compute(sc, 0);
+    printf("auto-substeps: %d (the scene has %d): h = %.4g, h*omega = %.4g, index %.4g (safety factor %g on h)\n", s, was, b.h, b.h_omega,
+           b.index, STAB_SAFETY);
+    return true;
+}
+
 static int cmd_check(int argc, char **argv)
 {
     options o;
     int rc = 0;
     scene sc;
     char fmtbuf[96], effects[160];
-    const char *path = parse_options("check", argc, argv, &o, "", &rc);
+    const char *path = parse_options("check", argc, argv, &o, "a", &rc);
     if (!path) {
         if (o.help) fputs(usage_check, stdout);
         return rc;
@@ -171,8 +233,11 @@ static int cmd_check(int argc, char **argv)
            sc.body == BODY_CHAIN ? "chain" : "graph", sc.dim, sc.n_nodes, sc.units, sc.nodes_per_unit, sc.n_edges,
            format_name(sc.number, &sc.fmt, fmtbuf, sizeof fmtbuf), sc.frames, sc.substeps, sc.iterations,
            sc.integrator == INTEGRATOR_VERLET ? "verlet" : "euler", scene_effects_string(&sc, effects, sizeof effects));
+    print_bound(&sc);
+    warn_bound(&sc);
+    if (o.auto_substeps && !apply_auto_substeps("check", &sc, o.auto_substeps)) rc = EXIT_BAD_INPUT;
     scene_free(&sc);
-    return 0;
+    return rc;
 }
 
 /* ---- run ---- */
@@ -244,12 +309,17 @@ static int cmd_run(int argc, char **argv)
     number_kind kind;
     char csv_tmp[1100], hex_tmp[1100], fmtbuf[96];
     bool ok;
-    const char *path = parse_options("run", argc, argv, &o, "fFcxp", &rc);
+    const char *path = parse_options("run", argc, argv, &o, "fFcxpa", &rc);
     if (!path) {
         if (o.help) fputs(usage_run, stdout);
         return rc;
     }
     if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (o.auto_substeps && !apply_auto_substeps("run", &sc, o.auto_substeps)) {
+        scene_free(&sc);
+        return EXIT_BAD_INPUT;
+    }
+    warn_bound(&sc);
     kind = o.format >= 0 ? (number_kind)o.format : sc.number;
     frames = o.frames >= 0 ? o.frames : sc.frames;
     if (kind == NUMBER_FIXED && sc.number == NUMBER_DOUBLE) { /* a double scene run in fixed: check it fits */
@@ -314,12 +384,17 @@ static int cmd_compare(int argc, char **argv)
     double sum2 = 0, worst = 0, stretch_fx = 0, stretch_dbl = 0, scale;
     long samples = 0;
     char fmtbuf[96];
-    const char *path = parse_options("compare", argc, argv, &o, "f", &rc);
+    const char *path = parse_options("compare", argc, argv, &o, "fa", &rc);
     if (!path) {
         if (o.help) fputs(usage_compare, stdout);
         return rc;
     }
     if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (o.auto_substeps && !apply_auto_substeps("compare", &sc, o.auto_substeps)) {
+        scene_free(&sc);
+        return EXIT_BAD_INPUT;
+    }
+    warn_bound(&sc);
     {
         char buf[160];
         const char *msg = scene_check_format(&sc, &sc.fmt, buf, sizeof buf);
