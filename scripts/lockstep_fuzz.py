@@ -10,7 +10,8 @@ damping, pins), its mouse script and its length, all within what the RTL support
 A Verilator build costs about a minute, so scenes share builds: the three builds of
 the RTL test scenes and B more drawn from --seed. Each scene runs through the
 harness with its own stimulus seed and random initial values
-(+verilator+rand+reset+2). A failure prints the scene's seed; --replay SEED runs that
+(+verilator+rand+reset+2); every third one is also reset at random cycles in the
+middle of frames. A failure prints the scene's seed; --replay SEED runs that
 one scene again (the scene file is kept in build/fuzz/).
 
 --scene FILE runs a given scene (its whole length) too; --faults builds the RTL
@@ -172,8 +173,9 @@ def main():
         path = os.path.join(fuzz, f"seed_{s}.scene")
         with open(os.path.join(ROOT, path), "w") as fh:
             fh.write(scene_text(build, s))
-        jobs.append((f"fuzz seed {s}", [path, "--quiet", "--seed", str(s), "+verilator+rand+reset+2",
-                                        f"+verilator+seed+{s % 100000 + 1}"], build, ""))
+        # every third scene also gets resets at random cycles in the middle of frames
+        jobs.append((f"fuzz seed {s}", [path, "--quiet", "--seed", str(s), "--resets", str(2 if s % 3 == 0 else 0),
+                                        "+verilator+rand+reset+2", f"+verilator+seed+{s % 100000 + 1}"], build, ""))
 
     # one harness per build (cached by build_harness.sh), built two at a time
     needed = {}

@@ -13,7 +13,8 @@
  * resets the top, writes the setup, then for every frame: drives the mouse,
  * pulses step, counts the cycles to frame_done (they must equal the formula of
  * docs/architecture.md, STRAND_CYCLES_PER_FRAME), reads every node through the
- * read port and compares x and y bit for bit. It prints one PASS or FAIL line;
+ * read port and compares x and y bit for bit; from the first reset on, no output
+ * may ever be X. It prints one PASS or FAIL line;
  * a FAIL names the frame, the node, the axis and both values.
  */
 module tb_top_frames;
@@ -60,6 +61,14 @@ module tb_top_frames;
 
     always #5 clk = ~clk;
 
+    // No X may reach an output once reset has been applied (every register starts as X here).
+    reg checking_x = 1'b0;
+    always @(negedge clk)
+        if (checking_x && ^{frame_done, rd_x, rd_y, phase, fv, fec, uidx, nidx, counter, wb_valid, wb_idx, wb_x, wb_y} === 1'bx) begin
+            $display("FAIL tb_top_frames: an output is X at time %0t after reset", $time);
+            $fatal(1);
+        end
+
     reg [39:0]  config_mem [0:NCONFIG-1];
     reg [31:0]  mouse_mem  [0:3*FRAMES-1];
     reg [31:0]  expect_mem [0:2*N*FRAMES-1];
@@ -86,6 +95,7 @@ module tb_top_frames;
 
         repeat (3) @(posedge clk);
         #1 reset = 1'b0;
+        checking_x = 1'b1;
         // the setup: constants, pins, then CMD init
         for (node = 0; node < NCONFIG; node = node + 1) begin
             #1 cfg_we = 1'b1;
