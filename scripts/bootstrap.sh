@@ -20,6 +20,7 @@ PACKAGES=(
   ffmpeg                    # make movie
   hyperfine                 # make bench
   python3 python3-venv      # plots (matplotlib in .venv)
+  clang libclang-rt-14-dev  # the scene-parser fuzzer (libFuzzer, ASan, UBSan)
 )
 PYTHON_REQUIREMENTS=scripts/requirements.txt
 
