@@ -13,9 +13,10 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--quiet]
-//                [+verilator+rand+reset+2 +verilator+seed+N]
+//                [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]
 //
+// --png-dir DIR draws every frame the RTL computed (make movie).
 // --mode rtl runs the RTL alone and --mode model the cycle model alone, on the same
 // stimulus (for make bench). --resets N asserts reset at N random cycles in the
 // middle of frames; the run then writes the setup again and starts the scene over,
@@ -50,7 +51,7 @@
 namespace {
 
 struct Options {
-    std::string scene, trace, csv, png, expect;
+    std::string scene, trace, csv, png, expect, png_dir;
     std::string mode = "lockstep"; // lockstep | rtl (the RTL alone) | model (the cycle model alone)
     int resets = 0;                // resets at random cycles during the frames
     int frames = -1;
@@ -178,6 +179,7 @@ class Run {
     int fault_writes_ = 0;
     bool last_edge_verlet_ = false;
     bool rtl_on_ = true, model_on_ = true;
+    render_view view_{};
     long reset_at_ = -1; // the cycle of the next random reset, -1 for none
     int resets_left_ = 0;
     // What the stimulus waits on, from whichever side runs (they are equal in lockstep).
@@ -367,6 +369,14 @@ Result Run::go(int frames) {
         std::vector<double> frame_pos;
         for (int i = 0; i < n; i++)
             for (int a = 0; a < 2; a++) frame_pos.push_back(fx_to_double(&sc_.fmt, model_.s.pos[i][a]));
+        if (!o_.png_dir.empty()) { // one picture per frame (make movie)
+            if (f == 0) render_view_fit(&view_, &sc_, frames);
+            std::vector<double> p3((size_t)n * 3, 0.0);
+            for (int i = 0; i < n; i++) p3[(size_t)3 * i] = frame_pos[(size_t)2 * i], p3[(size_t)3 * i + 1] = frame_pos[(size_t)2 * i + 1];
+            char path[1024];
+            std::snprintf(path, sizeof path, "%s/frame_%05d.png", o_.png_dir.c_str(), f + 1);
+            render_png(&sc_, &view_, reinterpret_cast<double (*)[3]>(p3.data()), f + 1, path);
+        }
         r_.final_pos.push_back(frame_pos);
         if (r_.final_pos.size() > 1 && o_.csv.empty()) r_.final_pos.erase(r_.final_pos.begin());
         dbl_err(dbl);
@@ -405,6 +415,7 @@ int main(int argc, char **argv) {
         else if (a == "--expect-fault") o.expect = value("--expect-fault");
         else if (a == "--quiet") o.quiet = true;
         else if (a == "--mode") o.mode = value("--mode");
+        else if (a == "--png-dir") o.png_dir = value("--png-dir");
         else if (a == "--resets") o.resets = std::atoi(value("--resets"));
         else if (a == "--help") return usage(nullptr), 0;
         else if (a[0] == '+') continue; // Verilator's plusargs
