@@ -12,13 +12,19 @@ cd "$(dirname "$0")/.."
 mkdir -p "$work/corpus"
 rc=0
 
-# 1. replay: every committed input runs once under the sanitizers
-inputs=(tb/fuzz/corpus/* $(ls tb/fuzz/crashes/* 2>/dev/null))
-if "$fuzzer" -runs=0 "${inputs[@]}" > "$work/replay.log" 2>&1; then
+# 1. replay: every committed input runs once under the sanitizers, each on its own
+inputs=(tb/fuzz/corpus/* $(ls tb/fuzz/crashes/* 2>/dev/null | grep -v '\.md$'))
+bad=()
+: > "$work/replay.log"
+for f in "${inputs[@]}"; do
+  "$fuzzer" "$f" >> "$work/replay.log" 2>&1 || bad+=("$f")
+done
+if [ ${#bad[@]} -eq 0 ]; then
   echo "PASS fuzz replay: ${#inputs[@]} committed inputs (corpus and crash reproducers) under ASan and UBSan"
 else
-  echo "FAIL fuzz replay: an input crashed, leaked or was misreported (log: $work/replay.log)"
-  grep -E 'ERROR|fuzz_scene:|Running: ' "$work/replay.log" | tail -5
+  for f in "${bad[@]}"; do
+    echo "FAIL fuzz replay $f: $("$fuzzer" "$f" 2>&1 | grep -E '^fuzz_scene:|ERROR: [A-Za-z]+Sanitizer|runtime error' | head -1)"
+  done
   rc=1
 fi
 
