@@ -527,7 +527,7 @@ static void print_result(const result *r)
 {
     char fmtname[32];
     snprintf(fmtname, sizeof fmtname, "Q%d.%d,", r->sc.fmt.width - r->sc.fmt.frac, r->sc.fmt.frac);
-    char efx[32] = "n/a (input)", edbl[32] = "n/a (input)";
+    char efx[32] = "not checked", edbl[32] = "not checked";
     if (r->c->checks & C_ENERGY) {
         snprintf(efx, sizeof efx, "%+.3g", r->fx.growth);
         snprintf(edbl, sizeof edbl, "%+.3g", r->dbl.growth);
