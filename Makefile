@@ -27,14 +27,14 @@ STRAND    := $(BUILD)/strand
 SCENES    := $(wildcard sim/scenes/*.scene)
 
 # The RTL: the top and everything under it (rtl/ holds one module per file).
-TOP_SRC   := rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/toward.v \
+TOP_SRC   := rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v \
              rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v
 # Scenes whose every frame the RTL must reproduce bit for bit (tb/scenes/ hold test-only builds).
 RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 # Parameter sets the top is linted with, beyond its defaults.
 LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
              "-GM=16 -GK=16 -GITER=4 -GSUBSTEPS=3 -GSQRT_BITS=12 -GDIV_BITS=9" \
-             "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8"
+             "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8" "-GRULE=1 -GM=3 -GK=4 -GITER=2"
 
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
@@ -115,9 +115,12 @@ bench: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
 	@python3 scripts/bench.py docs/performance.md
 
-# make test: the RTL test scenes, the planted faults, random initial values, 50 random scenes
+# Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).
+LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_rope.scene:120 sim/scenes/ref002_verlet.scene:40
+
+# make test: the RTL and reference scenes, the planted faults, random initial values, 50 random scenes
 test-lockstep: $(STRAND) $(GEN_HDRS)
-	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(RTL_SCENES),--scene $(s)) --faults --reset-seeds 3
+	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --faults --reset-seeds 3
 
 N ?= 200
 SEED ?= 1
@@ -160,7 +163,7 @@ lint-rtl: $(GEN_HDRS)
 	@verilator --lint-only -Wall -I$(GEN) $(TOP_SRC) --top-module strand_top
 	@for g in $(LINT_SETS); do verilator --lint-only -Wall -I$(GEN) $$g $(TOP_SRC) --top-module strand_top || exit 1; done
 	@out=$$(iverilog -Wall -g2005 -I$(GEN) -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
-	@echo "lint-rtl: clean (verilator --lint-only -Wall, 4 parameter sets; iverilog -Wall)"
+	@echo "lint-rtl: clean (verilator --lint-only -Wall, defaults and $(words $(LINT_SETS)) more parameter sets; iverilog -Wall)"
 
 lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 

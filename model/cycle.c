@@ -48,7 +48,13 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->en_mouse = hp->en_mouse;
     sc->mouse = MOUSE_IMPULSE;
     sc->en_constraints = hp->en_constraints;
-    sc->rule = RULE_CENTRED;
+    sc->rule = hp->rule ? RULE_PAIRWISE : RULE_CENTRED;
+    if (hp->en_constraints && hp->rule && n > 1) { /* the links pair_sequencer walks; rest comes from DIST */
+        sc->n_edges = n - 1;
+        sc->edges = calloc((size_t)sc->n_edges, sizeof *sc->edges);
+        if (!sc->edges) return false;
+        for (int i = 0; i + 1 < n; i++) sc->edges[i] = (scene_edge){i, i + 1, EDGE_ROD, 0};
+    }
     sc->pos = calloc((size_t)n, sizeof *sc->pos);
     sc->prev = calloc((size_t)n, sizeof *sc->prev);
     sc->pinned = calloc((size_t)n, sizeof *sc->pinned);
@@ -75,7 +81,7 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     o->rd_y = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_y[c->rd_u_q]) : 0;
     o->phase = c->phase;
     o->fv = c->done;
-    o->fec = c->hp.en_constraints && c->counter == m * c->hp.k;
+    o->fec = c->hp.en_constraints && c->counter == m * c->hp.k - (c->hp.rule ? 1 : 0);
     o->uidx = (uint32_t)c->uidx;
     o->nidx = (uint32_t)c->nidx;
     o->counter = (uint32_t)c->counter;
@@ -98,6 +104,8 @@ static void reset_all(cyc_model *c)
     }
     for (int k = 0; k < 3; k++) c->s.gravity[k] = c->s.box[k] = c->s.mouse[k] = 0;
     c->s.dist = c->s.impulse = c->s.damping = 0;
+    for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
+    c->pq_write_b = false;
     c->s.mouse_down = false;
     c->phase = PH_IDLE;
     c->substep = 0;
@@ -181,14 +189,90 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         }
     }
     /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
-    if (c->sq_state == SQ_NEXT) {
+    if (!hp->rule && c->sq_state == SQ_NEXT) {
         int node = c->uidx * k + c->nidx;
         if (sim_fx_centred_node(&c->s, node)) lane_write(c, written, c->uidx, c->nidx, node);
     }
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
+    /* pair_sequencer: the writes of a link's ends, then the control. */
+    if (hp->rule) {
+        const int links = n - 1;
+        const bool last_link = c->counter == (links > 0 ? links - 1 : 0);
+        const bool last_iter = c->sq_iter == hp->iter - 1;
+        const int a = c->uidx * k + c->nidx, b = a + 1;
+        if (c->sq_state == PQ_WR_A) { /* pair_edge() now; b's half is written next cycle */
+            bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
+            c->pq_write_b = false;
+            if (!(fa && fb)) {
+                long skipped = c->s.skipped;
+                fx_t b_old[3];
+                memcpy(b_old, c->s.pos[b], sizeof b_old);
+                sim_fx_pair_edge(&c->s, a);
+                bool valid = c->s.skipped == skipped;
+                memcpy(c->pq_b_new, c->s.pos[b], sizeof c->pq_b_new);
+                memcpy(c->s.pos[b], b_old, sizeof b_old);
+                if (valid && !fa) lane_write(c, written, c->uidx, c->nidx, a);
+                c->pq_write_b = valid && !fb;
+            }
+        } else if (c->sq_state == PQ_WR_B && c->pq_write_b) {
+            memcpy(c->s.pos[b], c->pq_b_new, sizeof c->pq_b_new);
+            lane_write(c, written, b / k, b % k, b);
+            c->pq_write_b = false;
+        }
+        for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
+        int next = c->sq_state;
+        c->sq_done = false;
+        switch (c->sq_state) {
+        case PQ_IDLE:
+            if (seq_start) {
+                c->sq_iter = 0;
+                c->uidx = c->nidx = c->counter = 0;
+                if (n < 2) c->sq_done = true;
+                else next = PQ_RD_A;
+            }
+            break;
+        case PQ_RD_A:
+            if (c->counter == links) c->counter = 0;
+            next = PQ_RD_B;
+            break;
+        case PQ_RD_B: next = PQ_GO; break;
+        case PQ_GO:
+            c->sq_timer = c->lt;
+            next = PQ_WAIT;
+            break;
+        case PQ_WAIT:
+            if (--c->sq_timer == 0) next = PQ_WR_A;
+            break;
+        case PQ_WR_A: next = PQ_WR_B; break;
+        case PQ_WR_B:
+            if (last_link) {
+                c->counter = links;
+                if (last_iter) {
+                    c->sq_done = true;
+                    next = PQ_IDLE;
+                } else {
+                    c->sq_iter++;
+                    c->uidx = c->nidx = 0;
+                    next = PQ_RD_A;
+                }
+            } else {
+                c->counter++;
+                if (c->nidx == k - 1) {
+                    c->nidx = 0;
+                    c->uidx++;
+                } else {
+                    c->nidx++;
+                }
+                next = PQ_RD_A;
+            }
+            break;
+        }
+        c->sq_state = next;
+    }
+
     /* chain_sequencer control. */
-    {
+    if (!hp->rule) {
         const bool last_node = c->counter == n - 1;
         const bool last_iter = c->sq_iter == hp->iter - 1;
         int next = c->sq_state;
@@ -300,7 +384,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         switch (in->cfg_addr) {
         case STRAND_REG_GDT2_X: c->s.gravity[0] = v; break;
         case STRAND_REG_GDT2_Y: c->s.gravity[1] = v; break;
-        case STRAND_REG_DIST: c->s.dist = v; break;
+        case STRAND_REG_DIST:
+            c->s.dist = v;
+            for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = v; /* pair_sequencer: every link */
+            break;
         case STRAND_REG_IMPULSE: c->s.impulse = v; break;
         case STRAND_REG_BOX_X: c->s.box[0] = v; break;
         case STRAND_REG_BOX_Y: c->s.box[1] = v; break;

@@ -26,7 +26,8 @@ extern "C" {
 #define CYC_MAX_UNITS 256
 
 enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3 };
-enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };
+enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
+enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };                 /* pair_sequencer */
 
 /* The inputs of strand_top during one cycle (all W-bit words raw). */
 typedef struct {
@@ -73,10 +74,12 @@ typedef struct {
     bool wb_valid[CYC_MAX_UNITS];
     uint32_t wb_idx[CYC_MAX_UNITS];
     fx_t wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
-    /* chain_sequencer */
+    /* chain_sequencer or pair_sequencer (rule 1) */
     int sq_state, sq_iter, sq_timer;
     int uidx, nidx, counter;
     bool sq_done;
+    bool pq_write_b;  /* pair_sequencer: b's new position waits for its write cycle */
+    fx_t pq_b_new[3];
 } cyc_model;
 
 /* The model of a build (all nodes at 0, nothing pinned, registers 0: strand_top after reset). */

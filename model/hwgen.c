@@ -31,7 +31,6 @@ const char *hw_check(const scene *sc, char *err, size_t len)
     if (sc->en_springs) return reject(sc, "springs", err, len, "springs");
     if (sc->en_ground) return reject(sc, "ground", err, len, "ground collision");
     if (sc->en_mouse && sc->mouse != MOUSE_IMPULSE) return reject(sc, "mouse", err, len, "the grab form of the mouse");
-    if (sc->en_constraints && sc->rule != RULE_CENTRED) return reject(sc, "constraints", err, len, "the pairwise rule");
     for (int i = 0; i < sc->n_nodes; i++)
         for (int k = 0; k < 3; k++)
             if (sc->prev[i][k] != sc->pos[i][k])
@@ -54,6 +53,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->en_damping = sc->damping > 0;
     hp->en_mouse = sc->en_mouse;
     hp->en_constraints = sc->en_constraints;
+    hp->rule = sc->rule == RULE_PAIRWISE ? 1 : 0;
     hp->uw = hp->m > 1 ? clog2(hp->m) : 1;
     hp->iw = hp->k > 1 ? clog2(hp->k) : 1;
     hp->cw = clog2((long)hp->m * hp->k + 1);
@@ -72,8 +72,9 @@ uint32_t hw_node_addr(const hw_params *hp, int node)
 long hw_cycles_per_frame(const hw_params *hp)
 {
     long toward = hp->sqrt_bits + hp->div_bits + 9;             /* toward.v: start cycle to done cycle */
-    long node = 2 * toward + 2;                                  /* two targets, then the window slides */
-    long pass = 2 + (long)hp->m * hp->k * node;                  /* load C and D, then every node */
+    long n = (long)hp->m * hp->k;
+    long pass = hp->rule == 0 ? 2 + n * (2 * toward + 2)         /* centred: load C and D, then every node: two targets, slide */
+                              : (n - 1) * (toward + 5);          /* pairwise: every link: read a, b, excess, write a, b */
     long substep = hp->en_constraints ? hp->k + 2 + hp->iter * pass : hp->k + 1;
     return hp->substeps * substep + 1;
 }
@@ -165,7 +166,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps);
         fprintf(f, "`define STRAND_EN_GRAVITY 1'b%d\n`define STRAND_EN_DAMPING 1'b%d\n`define STRAND_EN_MOUSE 1'b%d\n", hp.en_gravity,
                 hp.en_damping, hp.en_mouse);
-        fprintf(f, "`define STRAND_EN_CONSTRAINTS 1'b%d\n", hp.en_constraints);
+        fprintf(f, "`define STRAND_EN_CONSTRAINTS 1'b%d\n`define STRAND_RULE %d\n", hp.en_constraints, hp.rule);
         fprintf(f, "`define STRAND_FRAMES %d\n`define STRAND_NCONFIG %d\n`define STRAND_CYCLES_PER_FRAME %ld\n", frames, nw,
                 hw_cycles_per_frame(&hp));
         ok = fclose(f) == 0;
@@ -177,6 +178,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps);
         fprintf(f, "#define STRAND_EN_GRAVITY %d\n#define STRAND_EN_DAMPING %d\n#define STRAND_EN_MOUSE %d\n#define STRAND_EN_CONSTRAINTS %d\n",
                 hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints);
+        fprintf(f, "#define STRAND_RULE %d\n", hp.rule);
         ok = fclose(f) == 0;
     } else ok = false;
     if (ok && (f = open_in(dir, "config.hex", err, len))) {

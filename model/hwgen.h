@@ -19,6 +19,7 @@ extern "C" {
 typedef struct {
     int w, f, m, k, sqrt_bits, div_bits, iter, substeps;
     bool en_gravity, en_damping, en_mouse, en_constraints;
+    int rule; /* 0 centred (chain_sequencer), 1 pairwise (pair_sequencer) */
     int uw, iw, cw; /* derived widths, as strand_top computes them */
 } hw_params;
 

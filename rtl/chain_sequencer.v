@@ -145,7 +145,7 @@ module chain_sequencer #(
     /* verilator lint_off PINCONNECTEMPTY */
     // busy is not needed: the FSM waits for done
     toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_toward (
-        .clk(clk), .reset(reset), .start(t_start),
+        .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
         .p_x(from_u ? ux : dx), .p_y(from_u ? uy : dy), .c_x(cx), .c_y(cy), .rest_len(rest_len),
         .busy(), .done(t_done), .t_x(t_x), .t_y(t_y), .valid(t_valid));
     /* verilator lint_on PINCONNECTEMPTY */

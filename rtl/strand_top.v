@@ -9,7 +9,8 @@
  *
  * A frame (on `step`, when idle): the mouse is sampled; then SUBSTEPS times: every
  * unit runs its Verlet (+ mouse) pass over its K nodes at once, FV rising when all
- * are done; then the sequencer runs ITER centred-rule passes over all M x K nodes,
+ * are done; then the sequencer runs ITER constraint passes over the chain, centred
+ * (chain_sequencer, over every node) or pairwise (pair_sequencer, over every link),
  * FEC rising as each pass ends. frame_done pulses for one cycle at the end.
  *
  * Nodes are addressed as {unit, node} (UW + IW bits); that is the format of rd_addr,
@@ -34,7 +35,8 @@ module strand_top #(
     parameter [0:0]   EN_GRAVITY     = 1'b1,  // add g h^2
     parameter [0:0]   EN_DAMPING     = 1'b0,  // Verlet damping
     parameter [0:0]   EN_MOUSE       = 1'b1,  // mouse impulse
-    parameter [0:0]   EN_CONSTRAINTS = 1'b1,  // the centred rule
+    parameter [0:0]   EN_CONSTRAINTS = 1'b1,  // distance constraints between neighbours
+    parameter integer RULE           = 0,     // their rule: 0 centred (reference 000), 1 pairwise (002)
     // derived widths (leave at their defaults)
     parameter integer UW             = M > 1 ? $clog2(M) : 1,         // unit index
     parameter integer IW             = K > 1 ? $clog2(K) : 1,         // node index within a unit
@@ -117,6 +119,13 @@ module strand_top #(
             $error("strand_top: ITER and SUBSTEPS must be >= 1 in %m");
 `else
             $fatal(1, "strand_top: ITER and SUBSTEPS must be >= 1 in %m");
+`endif
+        end
+        if (RULE != 0 && RULE != 1) begin
+`ifdef SYNTHESIS
+            $error("strand_top: RULE must be 0 (centred) or 1 (pairwise) in %m");
+`else
+            $fatal(1, "strand_top: RULE must be 0 (centred) or 1 (pairwise) in %m");
 `endif
         end
         if (UW + IW > W) begin
@@ -269,9 +278,16 @@ module strand_top #(
     always @(posedge clk) rd_sel_q <= seq_rd_u;
 
     generate
-        if (EN_CONSTRAINTS) begin : g_constraints
+        if (EN_CONSTRAINTS && RULE == 0) begin : g_constraints
             chain_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
                               .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_seq (
+                .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
+                .rd_uidx(seq_rd_u), .rd_nidx(seq_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
+                .wr_en(seq_wr_en), .wr_uidx(seq_wr_u), .wr_nidx(seq_wr_n), .wr_x(seq_wr_x), .wr_y(seq_wr_y),
+                .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec_seq));
+        end else if (EN_CONSTRAINTS) begin : g_pairwise
+            pair_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
+                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
                 .rd_uidx(seq_rd_u), .rd_nidx(seq_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
                 .wr_en(seq_wr_en), .wr_uidx(seq_wr_u), .wr_nidx(seq_wr_n), .wr_x(seq_wr_x), .wr_y(seq_wr_y),

@@ -2,12 +2,15 @@
 `timescale 1ns / 1ps
 
 /*
- * toward - the point at distance `rest_len` from P in the direction of C.
+ * toward - the point at distance `rest_len` from P in the direction of C, or the
+ * excess of C's distance from P over `rest_len`.
  *
- * Computes model/engine_body.h toward(): with d = C - P (saturating subtract),
+ * Computes model/engine_body.h toward() (excess = 0) or the core of pair_edge()
+ * (excess = 1): with d = C - P (saturating subtract),
  *     len = fx_sqrt(d.x^2 + d.y^2)      radicand: exact 2W-bit sum of squares
- *     r   = fx_div(rest_len, len)           rest_len / len, unsigned, Q.F
- *     T   = P + d * r                   fx_mul (rounded ties-to-even), fx_add
+ *     r   = fx_div(rest_len, len)       rest_len / len, unsigned, Q.F
+ *     T   = P + d * r                   excess = 0: fx_mul (rounded ties-to-even), fx_add
+ *     T   = d - d * r                   excess = 1: the excess e, fx_mul, fx_sub
  * valid = 0 when len = 0 (the divider's divide-by-zero flag): the caller skips T.
  *
  * Ports: p_*, c_* signed Q(W-F).F; rest_len unsigned Q(W-F).F (> 0); t_* signed Q(W-F).F.
@@ -32,7 +35,8 @@ module toward #(
 ) (
     input  wire         clk,
     input  wire         reset,  // synchronous, active high
-    input  wire         start,  // sample P, C and rest_len
+    input  wire         start,  // sample P, C, rest_len and excess
+    input  wire         excess, // 0: T = P + d*r (centred rule), 1: T = d - d*r (pairwise rule)
     input  wire [W-1:0] p_x,
     input  wire [W-1:0] p_y,
     input  wire [W-1:0] c_x,
@@ -68,6 +72,7 @@ module toward #(
     reg [2:0]     state_q, state_d;
     reg           done_q, done_d;
     reg [W-1:0]   dx_q, dy_q, px_q, py_q, rest_q, r_q;
+    reg           excess_q;
     reg           dz_q;
     reg [2*W-1:0] sq_q;   // d.x^2
 
@@ -96,7 +101,8 @@ module toward #(
     /* verilator lint_off PINCONNECTEMPTY */
     fx_add #(.W(W)) u_dx (.sub(1'b1), .a(c_x), .b(p_x), .y(dx_new), .sat());
     fx_add #(.W(W)) u_dy (.sub(1'b1), .a(c_y), .b(p_y), .y(dy_new), .sat());
-    fx_add #(.W(W)) u_t  (.sub(1'b0), .a(state_q == S_MY ? py_q : px_q), .b(mul_round), .y(t_sum), .sat());
+    wire [W-1:0] t_base = excess_q ? (state_q == S_MY ? dy_q : dx_q) : (state_q == S_MY ? py_q : px_q);
+    fx_add #(.W(W)) u_t  (.sub(excess_q), .a(t_base), .b(mul_round), .y(t_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
@@ -155,6 +161,7 @@ module toward #(
             dy_q   <= dy_new;
             px_q   <= p_x;
             py_q   <= p_y;
+            excess_q <= excess;
             rest_q <= rest_len;
         end
         if (state_q == S_SQX) sq_q <= mul_exact;

@@ -32,13 +32,13 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("BUILD", "build")
 FIXED_BUILDS = ["sim/scenes/ref000_rope.scene", "tb/scenes/chain_q10_8.scene", "tb/scenes/chain_k4_bits.scene"]
 BUILD_KEYS = ["width", "frac", "units", "nodes_per_unit", "sqrt_bits", "div_bits", "iterations", "substeps",
-              "gravity", "damping", "mouse", "constraints"]
+              "gravity", "damping", "mouse", "constraints", "rule"]
 
 
 def read_build(path):
     """The build parameters of one of the fixed scenes (from its text)."""
     b = {"sqrt_bits": None, "div_bits": None, "iterations": 1, "substeps": 1, "frac": 16, "width": 32,
-         "gravity": False, "damping": False, "mouse": False, "constraints": False}
+         "gravity": False, "damping": False, "mouse": False, "constraints": False, "rule": "centred"}
     section = None
     for line in open(os.path.join(ROOT, path)):
         line = line.split(";")[0].strip()
@@ -52,6 +52,8 @@ def read_build(path):
                 b[key] = int(value)
             if key == "damping":
                 b["damping"] = float(value) > 0
+            if key == "rule":
+                b["rule"] = value
     b["sqrt_bits"] = b["sqrt_bits"] or b["width"] - 1
     b["div_bits"] = b["div_bits"] or b["width"] - 1
     return b
@@ -64,7 +66,7 @@ def random_build(rng):
             "sqrt_bits": rng.randint(max(3, w // 2), w - 1), "div_bits": rng.randint(max(3, w // 2), w - 1),
             "iterations": rng.randint(1, 3), "substeps": rng.randint(1, 2),
             "gravity": rng.random() < 0.8, "damping": rng.random() < 0.4, "mouse": rng.random() < 0.7,
-            "constraints": rng.random() < 0.85}
+            "constraints": rng.random() < 0.85, "rule": rng.choice(["centred", "pairwise"])}
 
 
 def builds_for(seed, extra):
@@ -100,7 +102,7 @@ def scene_text(build, seed):
         g = rng.uniform(0, reach / 50) * build["substeps"] ** 2
         lines += ["[gravity]", f"accel = {rng.uniform(-0.3, 0.3) * g:.6f} {-g:.6f}"]
     if build["constraints"]:
-        lines += ["[constraints]", "rule = centred"]
+        lines += ["[constraints]", f"rule = {build['rule']}"]
     if build["mouse"]:
         box = min(rng.uniform(rest, 4 * rest + 8 * lsb), reach)
         lines += ["[mouse]", f"box = {box:.6f} {box:.6f}", f"impulse = {rng.uniform(-rest, rest):.6f}"]
@@ -136,7 +138,7 @@ def main():
     ap.add_argument("--builds", type=int, default=2, help="random builds beside the three fixed ones")
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--replay", type=int, help="run the one scene with this seed")
-    ap.add_argument("--scene", action="append", default=[], help="also run this scene, its whole length")
+    ap.add_argument("--scene", action="append", default=[], help="also run this scene (PATH, or PATH:FRAMES)")
     ap.add_argument("--harness-for", metavar="SCENE", help="build (if needed) the harness for SCENE's build, print its path")
     ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
     ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
@@ -156,13 +158,15 @@ def main():
     fuzz = os.path.join(BUILD, "fuzz")
     os.makedirs(os.path.join(ROOT, fuzz), exist_ok=True)
     jobs = []   # (label, harness args, build, defines)
-    for path in a.scene:
-        jobs.append((f"scene {path}", [path], read_build(path), ""))
+    for spec in a.scene:  # PATH or PATH:FRAMES
+        path, _, frames = spec.partition(":")
+        jobs.append((f"scene {path}", [path] + (["--frames", frames] if frames else []), read_build(path), ""))
     if a.reset_seeds and a.scene:
+        first = a.scene[0].partition(":")[0]
         for k in range(a.reset_seeds):
-            jobs.append((f"reset-seed {k + 1}", [a.scene[0], "--frames", "20", "+verilator+rand+reset+2",
-                                                  f"+verilator+seed+{k + 1}"], read_build(a.scene[0]), ""))
-        jobs.append(("reset-zero", [a.scene[0], "--frames", "20"], read_build(a.scene[0]), ""))
+            jobs.append((f"reset-seed {k + 1}", [first, "--frames", "20", "+verilator+rand+reset+2",
+                                                  f"+verilator+seed+{k + 1}"], read_build(first), ""))
+        jobs.append(("reset-zero", [first, "--frames", "20"], read_build(first), ""))
     if a.faults:
         fs = "tb/scenes/chain_q10_8.scene"
         for kind in ("flip", "delay"):

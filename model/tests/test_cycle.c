@@ -104,9 +104,18 @@ static void test_chain_k4_bits(void **state)
     check_scene(STRAND_ROOT "/tb/scenes/chain_k4_bits.scene", 60);
 }
 
+static void test_pairwise_scenes(void **state)
+{
+    (void)state;
+    check_scene(STRAND_ROOT "/sim/scenes/pendulum.scene", 120);
+    check_scene(STRAND_ROOT "/sim/scenes/hanging_rope.scene", 40);
+    check_scene(STRAND_ROOT "/sim/scenes/ref002_verlet.scene", 20);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pairwise_scenes),
         cmocka_unit_test(test_ref000_rope),
         cmocka_unit_test(test_chain_q10_8),
         cmocka_unit_test(test_chain_k4_bits),

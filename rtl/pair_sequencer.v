@@ -1,0 +1,225 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * pair_sequencer - the pairwise constraint pass (references 001 struts, 002) over
+ * the links of a chain of M x K nodes.
+ *
+ * Walks the links (a, b) = (i, i+1), i = 0 .. N-2, in order, ITER times, and for
+ * each computes model/engine_body.h pair_edge(): the excess e = d - d * rest/|d|
+ * along d = b - a (the `toward` datapath in excess mode); both ends free: h = e/2
+ * (fx_avg with 0: rounded ties-to-even), a += h, b -= h, so the midpoint stays bit
+ * for bit; one end pinned: the other takes all of e; both pinned, or a zero length:
+ * nothing is written. uidx/nidx are a's address, counter the links finished, and
+ * FEC = (counter == N - 1).
+ *
+ * Timing, fixed whatever the data: each link takes LT + 5 cycles (read a, read b,
+ * start toward, LT cycles until it is done, write a, write b), LT = SQRT_BITS +
+ * DIV_BITS + 9; a pass over the N - 1 links takes (N - 1) * (LT + 5) cycles after
+ * the start cycle; done is high the cycle after the last pass.
+ *
+ * Storage is read through the units' synchronous port A (address now, data next
+ * cycle) and written through their write port (wr_* are valid in the write cycle).
+ */
+module pair_sequencer #(
+    parameter integer W         = 32,    // word width, bits
+    parameter integer F         = 16,    // fraction bits
+    parameter integer M         = 4,     // units
+    parameter integer K         = 5,     // nodes per unit
+    parameter integer UW        = 2,     // unit index width, >= 1
+    parameter integer IW        = 3,     // node index width, >= 1
+    parameter integer CW        = 5,     // counter width, holds M*K
+    parameter integer ITER      = 1,     // passes per constraint phase
+    parameter integer SQRT_BITS = W - 1, // root bits resolved
+    parameter integer DIV_BITS  = W - 1  // quotient bits resolved
+) (
+    input  wire          clk,
+    input  wire          reset,      // synchronous, active high
+    input  wire          start,      // one-cycle pulse: run ITER passes
+    output reg           done,       // one-cycle pulse after the last pass
+    input  wire [W-1:0]  rest_len,   // rest length of every link
+
+    output reg  [UW-1:0] rd_uidx,    // storage read address (combinational)
+    output reg  [IW-1:0] rd_nidx,
+    input  wire [W-1:0]  rd_x,       // its data, the next cycle
+    input  wire [W-1:0]  rd_y,
+    input  wire          rd_pinned,
+
+    output wire          wr_en,      // write one end of the link now
+    output wire [UW-1:0] wr_uidx,
+    output wire [IW-1:0] wr_nidx,
+    output wire [W-1:0]  wr_x,
+    output wire [W-1:0]  wr_y,
+
+    output reg  [UW-1:0] uidx,       // the link's first node a: unit
+    output reg  [IW-1:0] nidx,       //                          node
+    output reg  [CW-1:0] counter,    // links finished in this pass
+    output wire          fec         // counter == M x K - 1
+);
+
+    localparam integer N = M * K;
+    localparam integer LINKS_I = N - 1;
+    localparam integer LAST_LINK_I = N > 1 ? N - 2 : 0;
+    localparam integer ITW = ITER > 1 ? $clog2(ITER) : 1;
+    localparam integer K_LAST_I = K - 1;
+    localparam integer ITER_LAST_I = ITER - 1;
+    localparam [CW-1:0]  LINKS     = LINKS_I[CW-1:0];
+    localparam [CW-1:0]  LAST_LINK = LAST_LINK_I[CW-1:0];
+    localparam [IW-1:0]  K_LAST    = K_LAST_I[IW-1:0];
+    localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
+
+    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
+    // $fatal for the simulators (Icarus carries on after $error).
+    initial begin
+        if (M < 1 || K < 1 || ITER < 1 || (1 << CW) <= N) begin
+`ifdef SYNTHESIS
+            $error("pair_sequencer: M, K, ITER must be >= 1 and CW must hold M*K (M=%0d K=%0d ITER=%0d CW=%0d) in %m", M, K, ITER, CW);
+`else
+            $fatal(1, "pair_sequencer: M, K, ITER must be >= 1 and CW must hold M*K (M=%0d K=%0d ITER=%0d CW=%0d) in %m", M, K, ITER, CW);
+`endif
+        end
+    end
+
+    localparam [2:0] S_IDLE = 3'd0, // waiting for start
+                     S_RD_A = 3'd1, // a is addressed
+                     S_RD_B = 3'd2, // a arrives; b is addressed
+                     S_GO   = 3'd3, // b arrives; toward starts
+                     S_WAIT = 3'd4, // until toward is done: the new a and b
+                     S_WR_A = 3'd5, // write a
+                     S_WR_B = 3'd6; // write b, next link
+
+    function [UW+IW-1:0] next_node(input [UW-1:0] u, input [IW-1:0] n);
+        next_node = n == K_LAST ? {u + 1'b1, {IW{1'b0}}} : {u, n + 1'b1};
+    endfunction
+
+    reg [2:0]     state_q, state_d;
+    reg [ITW-1:0] iter_q;
+    reg [W-1:0]   ax, ay, bx, by;       // the link's ends
+    reg           a_pin, b_pin;
+    reg [W-1:0]   nax, nay, nbx, nby;   // their new positions
+    reg           wa, wb;               // which are written
+    wire [UW-1:0] b_u;
+    wire [IW-1:0] b_n;
+    assign {b_u, b_n} = next_node(uidx, nidx);
+
+    wire last_link = counter == LAST_LINK;
+    wire last_iter = iter_q == ITER_LAST;
+
+    // ---- the datapath: the excess, then the split ----
+    wire         t_done, t_valid;
+    wire [W-1:0] ex, ey;   // e = d - d * rest/|d|
+    /* verilator lint_off PINCONNECTEMPTY */
+    // busy is not needed: the FSM waits for done
+    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_toward (
+        .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
+        .p_x(ax), .p_y(ay), .c_x(rd_x), .c_y(rd_y), .rest_len(rest_len),  // b arrives as toward starts
+        .busy(), .done(t_done), .t_x(ex), .t_y(ey), .valid(t_valid));
+    /* verilator lint_on PINCONNECTEMPTY */
+    wire [W-1:0] hx, hy;   // e / 2
+    fx_avg #(.W(W)) u_hx (.a(ex), .b({W{1'b0}}), .y(hx));
+    fx_avg #(.W(W)) u_hy (.a(ey), .b({W{1'b0}}), .y(hy));
+    wire         both_free = !a_pin && !b_pin;
+    wire [W-1:0] da_x = both_free ? hx : ex, da_y = both_free ? hy : ey;  // what a and b move by
+    wire [W-1:0] sum_ax, sum_ay, dif_bx, dif_by;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // saturation flags are not needed: the saturated value is the result
+    fx_add #(.W(W)) u_ax (.sub(1'b0), .a(ax), .b(da_x), .y(sum_ax), .sat());
+    fx_add #(.W(W)) u_ay (.sub(1'b0), .a(ay), .b(da_y), .y(sum_ay), .sat());
+    fx_add #(.W(W)) u_bx (.sub(1'b1), .a(bx), .b(da_x), .y(dif_bx), .sat());
+    fx_add #(.W(W)) u_by (.sub(1'b1), .a(by), .b(da_y), .y(dif_by), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // ---- storage access ----
+    always @* begin
+        rd_uidx = uidx;   // S_RD_A and otherwise: a
+        rd_nidx = nidx;
+        if (state_q == S_RD_B) begin
+            rd_uidx = b_u;
+            rd_nidx = b_n;
+        end
+    end
+    assign wr_en   = (state_q == S_WR_A && wa) || (state_q == S_WR_B && wb);
+    assign wr_uidx = state_q == S_WR_B ? b_u : uidx;
+    assign wr_nidx = state_q == S_WR_B ? b_n : nidx;
+    assign wr_x    = state_q == S_WR_B ? nbx : nax;
+    assign wr_y    = state_q == S_WR_B ? nby : nay;
+    assign fec     = counter == LINKS;
+
+    // ---- next state ----
+    always @* begin
+        state_d = state_q;
+        case (state_q)
+            S_IDLE:  if (start) state_d = N > 1 ? S_RD_A : S_IDLE;
+            S_RD_A:  state_d = S_RD_B;
+            S_RD_B:  state_d = S_GO;
+            S_GO:    state_d = S_WAIT;
+            S_WAIT:  if (t_done) state_d = S_WR_A;
+            S_WR_A:  state_d = S_WR_B;
+            S_WR_B:  state_d = last_link && last_iter ? S_IDLE : S_RD_A;
+            default: state_d = S_IDLE;
+        endcase
+    end
+
+    // ---- control registers ----
+    always @(posedge clk) begin
+        if (reset) begin
+            state_q <= S_IDLE;
+            iter_q  <= {ITW{1'b0}};
+            uidx    <= {UW{1'b0}};
+            nidx    <= {IW{1'b0}};
+            counter <= {CW{1'b0}};
+            done    <= 1'b0;
+        end else begin
+            state_q <= state_d;
+            done    <= (state_q == S_IDLE && start && N < 2) || (state_q == S_WR_B && last_link && last_iter);
+            if (state_q == S_IDLE && start) begin
+                iter_q  <= {ITW{1'b0}};
+                uidx    <= {UW{1'b0}};
+                nidx    <= {IW{1'b0}};
+                counter <= {CW{1'b0}};
+            end
+            if (state_q == S_RD_A && counter == LINKS) counter <= {CW{1'b0}};  // a new pass
+            if (state_q == S_WR_B) begin
+                if (last_link) begin
+                    counter <= LINKS;  // FEC: until the next pass starts
+                    if (!last_iter) begin
+                        iter_q <= iter_q + 1'b1;
+                        uidx   <= {UW{1'b0}};
+                        nidx   <= {IW{1'b0}};
+                    end
+                end else begin
+                    counter <= counter + 1'b1;
+                    {uidx, nidx} <= {b_u, b_n};
+                end
+            end
+        end
+    end
+
+    // ---- datapath registers, each written in its own state ----
+    always @(posedge clk) begin
+        case (state_q)
+            S_RD_B: begin
+                ax    <= rd_x;
+                ay    <= rd_y;
+                a_pin <= rd_pinned;
+            end
+            S_GO: begin
+                bx    <= rd_x;
+                by    <= rd_y;
+                b_pin <= rd_pinned;
+            end
+            S_WAIT: if (t_done) begin
+                nax <= sum_ax;
+                nay <= sum_ay;
+                nbx <= dif_bx;
+                nby <= dif_by;
+                wa  <= t_valid && !a_pin;
+                wb  <= t_valid && !b_pin;
+            end
+            default: ;
+        endcase
+    end
+
+endmodule
+
+`resetall
