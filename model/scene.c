@@ -438,18 +438,31 @@ static int handler(void *user, const char *section, const char *key, const char 
     return FAIL("unknown key '%s' in [%s]", key, section);
 }
 
-/* The line reader: counts lines, checks section headers, rejects over-long lines. */
+/* The line reader: counts lines, checks section headers, rejects over-long lines and
+   NUL bytes (fgets and inih's string functions would silently stop at one). */
 static char *reader(char *str, int num, void *stream)
 {
     parser *p = stream;
-    size_t len;
+    size_t len = 0;
+    int ch = EOF;
     char *s;
-    if (!fgets(str, num, p->fp)) return NULL;
+    while (len + 1 < (size_t)num && (ch = getc(p->fp)) != EOF) {
+        if (ch == '\0') {
+            fail_at(p, p->line + 1, "the line contains a NUL byte: a scene is text");
+            return NULL;
+        }
+        str[len++] = (char)ch;
+        if (ch == '\n') break;
+    }
+    if (len == 0) return NULL;
+    str[len] = 0;
     p->line++;
-    len = strlen(str);
-    if (len == (size_t)num - 1 && str[len - 1] != '\n' && !feof(p->fp)) {
-        fail_at(p, p->line, "line is longer than %d characters", num - 2);
-        return NULL;
+    if (str[len - 1] != '\n' && len + 1 >= (size_t)num) {
+        int next = getc(p->fp);
+        if (next != EOF && next != '\n') {
+            fail_at(p, p->line, "line is longer than %d characters", num - 1);
+            return NULL;
+        }
     }
     for (s = str; *s == ' ' || *s == '\t'; s++)
         ;

@@ -128,6 +128,25 @@ static void test_format_errors(void **state)
     scene_free(&sc);
 }
 
+/* A NUL byte is rejected at its line, wherever it is (fgets and strlen cannot see past one). */
+static void test_nul_byte(void **state)
+{
+    static const char text[] = "[time]\n; a comment\0dt = 1\n[chain]\n";
+    scene sc;
+    char err[SCENE_ERR_LEN], prefix[128];
+    const char *path = write_scene("");
+    FILE *f = fopen(path, "wb");
+    (void)state;
+    assert_non_null(f);
+    fwrite(text, 1, sizeof text - 1, f);
+    fclose(f);
+    assert_false(scene_load(&sc, path, err));
+    snprintf(prefix, sizeof prefix, "%s:2: ", path);
+    assert_non_null(strstr(err, prefix));
+    assert_non_null(strstr(err, "NUL byte"));
+    unlink(path);
+}
+
 static void test_missing_file(void **state)
 {
     scene sc;
@@ -180,6 +199,7 @@ int main(void)
         cmocka_unit_test(test_syntax_and_keys),         cmocka_unit_test(test_required_and_contradictions),
         cmocka_unit_test(test_graph_errors),            cmocka_unit_test(test_format_errors),
         cmocka_unit_test(test_missing_file),            cmocka_unit_test(test_chain_layout_and_defaults),
+        cmocka_unit_test(test_nul_byte),
         cmocka_unit_test(test_shipped_scenes_load),
     };
     return cmocka_run_group_tests_name("scene files", tests, NULL, NULL);
