@@ -39,8 +39,7 @@ test-fuzz: $(FUZZ_BIN) $(STRAND)
 	@rc=0; scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SHORT) $(FUZZ_DIR) $(FUZZ_DIR)/short.json || rc=1; \
 	  scripts/bad_input_cli.sh $(STRAND) || rc=1; exit $$rc
 
-fuzz: bootstrap
-	@$(MAKE) --no-print-directory -s $(FUZZ_BIN) $(STRAND)
+fuzz: bootstrap $(FUZZ_BIN) $(STRAND)
 	@scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SECONDS) $(FUZZ_DIR) $(FUZZ_DIR)/long.json
 
 # 10^6 frames of each hard case, SOAK_JOBS at a time; one PASS/FAIL line per case.
@@ -52,8 +51,7 @@ soak: $(STAB_BIN)
 
 # docs/stability.md: the hard cases at their make-test length, the Euler/Verlet series and
 # plot, and a FUZZ_SHORT-second fuzz run; every figure comes from this run.
-stability: bootstrap
-	@$(MAKE) --no-print-directory -s $(STAB_BIN) $(FUZZ_BIN) $(STRAND)
+stability: bootstrap $(STAB_BIN) $(FUZZ_BIN) $(STRAND)
 	@mkdir -p $(STAB_DIR) docs/img
 	@$(STAB_BIN) --json $(STAB_DIR)/doc.json --series $(STAB_DIR)/euler_verlet.csv | tee $(STAB_DIR)/doc.log
 	@scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SHORT) $(FUZZ_DIR) $(FUZZ_DIR)/doc.json | tee -a $(STAB_DIR)/doc.log
