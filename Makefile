@@ -163,7 +163,7 @@ lint-rtl: $(GEN_HDRS)
 	@verilator --lint-only -Wall -I$(GEN) $(TOP_SRC) --top-module strand_top
 	@for g in $(LINT_SETS); do verilator --lint-only -Wall -I$(GEN) $$g $(TOP_SRC) --top-module strand_top || exit 1; done
 	@out=$$(iverilog -Wall -g2005 -I$(GEN) -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
-	@echo "lint-rtl: clean (verilator --lint-only -Wall, defaults and $(words $(LINT_SETS)) more parameter sets; iverilog -Wall)"
+	@echo "lint-rtl: clean (verilator --lint-only -Wall on the defaults and every LINT_SETS parameter set; iverilog -Wall)"
 
 lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 

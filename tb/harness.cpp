@@ -512,7 +512,7 @@ int main(int argc, char **argv) {
         return 0;
     }
     std::printf("PASS lockstep %s seed %" PRIu64 ": %d frames, %ld cycles%s, every output equal in every cycle\n", sc.name, o.seed,
-                r.frames, r.cycles, r.resets ? (", " + std::to_string(r.resets) + " random resets").c_str() : "");
+                r.frames, r.cycles, r.resets ? (", " + std::to_string(r.resets) + (r.resets == 1 ? " random reset" : " random resets")).c_str() : "");
     if (!o.quiet) {
         std::printf("  cycles per frame      %ld%s\n", r.frame_cycles_max,
                     r.frame_cycles_min == r.frame_cycles_max ? "" : " (varies: a bug)");
