@@ -39,7 +39,7 @@ LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model run sim wave docs-sim bench movie test test-model test-scenes test-rtl-frames test-lockstep lockstep-fuzz \
+.PHONY: help bootstrap model run sim wave docs-sim bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep lockstep-fuzz \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -50,11 +50,17 @@ help:
 	@echo "  make wave [SCENE=...]  run make sim with WAVES=1 and open GTKWave on the trace"
 	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
 	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=4]  random scenes in lockstep; a failure prints its seed"
+	@echo "  make lockstep-hard  every hard case the RTL supports, in lockstep (sim/scenes/hard_*.scene)"
 	@echo "  make model       build the C model library and the CLI, $(STRAND)"
 	@echo "  make docs-sim    regenerate the picture and summary README.md shows"
 	@echo "  make bench       simulated cycles per second (lockstep, RTL alone, model alone) -> docs/performance.md"
 	@echo "  make movie [SCENE=...]  an MP4 and a GIF of the scene's frames (build/movie/)"
 	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
+	@echo "  make test-stability  the hard cases in fixed and double (10^5 frames of most) and strand check's stability bound"
+	@echo "  make test-fuzz   replay the fuzz corpus and crash reproducers, a 45 s fuzz run, malformed scenes on the CLI"
+	@echo "  make fuzz [FUZZ_SECONDS=600]  a longer bounded run of the scene-parser fuzzer (libFuzzer, ASan, UBSan)"
+	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model"
+	@echo "  make stability   regenerate docs/stability.md and docs/img/stability_euler_verlet.png"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
 	@echo "  make clean       remove $(BUILD)/"
 
@@ -116,11 +122,20 @@ bench: bootstrap
 	@python3 scripts/bench.py docs/performance.md
 
 # Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).
-LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_rope.scene:120 sim/scenes/ref002_verlet.scene:40
+LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_rope.scene:120 sim/scenes/ref002_verlet.scene:40 \
+                   sim/scenes/hard_collapse.scene sim/scenes/hard_saturate.scene:300 sim/scenes/hard_narrow_q10_8.scene:200 \
+                   sim/scenes/hard_mouse_impulse.scene:40
+# Every hard case the RTL supports (issue F), in lockstep: make lockstep-hard (longer; not in make test).
+HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 hard_many_iterations:10 \
+            hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
 
 # make test: the RTL and reference scenes, the planted faults, random initial values, 50 random scenes
 test-lockstep: $(STRAND) $(GEN_HDRS)
 	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --faults --reset-seeds 3
+
+lockstep-hard: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(HARD_RTL),--scene sim/scenes/$(subst :,.scene:,$(if $(findstring :,$(s)),$(s),$(s):))) 
 
 N ?= 200
 SEED ?= 1
@@ -169,7 +184,8 @@ lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 
 # ---- everything ----
 
-TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep
+TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep \
+              test-stability test-fuzz
 
 test: bootstrap
 	@scripts/run_tests.sh $(TEST_STEPS)
@@ -178,3 +194,4 @@ clean:
 	rm -rf $(BUILD)
 
 -include tb/units.mk
+include scripts/stability.mk
