@@ -8,8 +8,8 @@
  *   - the error of fixed against double: RMS and largest node distance over every
  *     frame and node, in rest lengths (as `strand compare`);
  *   - the largest segment stretch of each over the run and at the last frame (%);
- *   - cycles per frame: the RTL's formula (hw_cycles_per_frame) for a chain with the
- *     centred rule, else an estimate (see cycles_estimate below), labelled as such;
+ *   - cycles per frame: the RTL's formula (hw_cycles_per_frame) for a scene the RTL
+ *     builds (hw_check), else an estimate (see cycles_estimate below), labelled as such;
  *   - the C model's time per frame for each engine (microseconds);
  *   - the analytic check (--check), on both runs:
  *       period    pendulum: period from the zero crossings of the free node's offset
@@ -43,9 +43,9 @@ static double now(void)
 }
 
 /*
- * Cycles per frame for what the RTL does not build yet, an estimate on the same
- * datapath: a rod of the pairwise rule (an edge walk) costs one `toward` sequence
- * (SQRT_BITS + DIV_BITS + 9 cycles) plus 3 (read both ends, write both); a spring
+ * Cycles per frame for what the RTL does not build yet (graphs, springs), an estimate on
+ * the same datapath: a rod costs one `toward` sequence (SQRT_BITS + DIV_BITS + 9 cycles)
+ * plus 5, as pair_sequencer does for a chain's link; a spring
  * costs a root, one signed divide per axis and 8 cycles of multiply-adds. The
  * Verlet pass and the pass overheads are the chain's (K + 2 per substep, 2 per pass).
  */
@@ -59,7 +59,7 @@ static long cycles_estimate(const scene *sc)
         if (sc->edges[e].kind == EDGE_SPRING) springs++;
         else rods++;
     }
-    pass = 2 + rods * (toward + 3);
+    pass = rods * (toward + 5);
     substep = hp.k + 2;
     if (sc->en_constraints) substep += (long)sc->iterations * pass;
     if (sc->en_springs) substep += 2 + springs * (hp.sqrt_bits + 1 + (long)sc->dim * (hp.div_bits + 1) + 8);
@@ -362,8 +362,8 @@ int main(int argc, char **argv)
 
     {
         hw_params hp;
-        bool rtl = sc.body == BODY_CHAIN && sc.dim == 2 && !sc.en_springs && !sc.en_ground &&
-                   (!sc.en_constraints || sc.rule == RULE_CENTRED);
+        char why[SCENE_ERR_LEN];
+        bool rtl = hw_check(&sc, why, sizeof why) == NULL; /* the RTL builds it: its formula is checked every frame */
         double lsb = ldexp(1.0, -sc.fmt.frac);
         double h = scene_h(&sc);
         double gh2 = sc.en_gravity ? sqrt(sc.gravity[0] * sc.gravity[0] + sc.gravity[1] * sc.gravity[1] + sc.gravity[2] * sc.gravity[2]) * h * h : 0;
