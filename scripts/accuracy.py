@@ -860,7 +860,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
         better = sum(1 for r, q in cp if q["stretch_final_fx"] < r["stretch_final_fx"])
         ratio = sorted(q["cycles"] / r["cycles"] for r, q in cp)[len(cp) // 2]
         conc.append(f"**Rule.** At the same substeps and iterations the pairwise rule ends with less rest stretch than the "
-                    f"centred rule in {better} of {len(cp)} Q16.16 settings, and its estimated cycles are "
+                    f"centred rule in {better} of {len(cp)} Q16.16 settings, and its cycles (RTL formula) are "
                     f"{g(ratio)} times the centred rule's (median): one `toward` per link instead of two per node.")
     A("## Conclusions")
     A("")
