@@ -17,9 +17,9 @@ Run from the repository root (tb/synth.mk does):
 Each build keeps its raw files in DIR/<build>/: <flow>.ys (the Yosys script),
 <flow>.log, <flow>.stat.json (Yosys `stat -json`), ice40.json (the netlist for
 nextpnr), pnr.log and pnr.report.json (nextpnr), and <flow>.ok, a stamp holding
-the hash of the commands and the tool version. A flow is run again only when its
-stamp is missing, older than an RTL source, the generated header or its input
-netlist, or records other commands.
+a hash of the commands, the tool version and the contents of the RTL sources and
+the generated header (for nextpnr: of its command and the netlist's stamp). A flow
+is run again only when its stamp is missing or holds another hash.
 
 Standard library only.
 """
@@ -42,6 +42,7 @@ TOP = "strand_top"
 COMMON = [
     ("W", 32), ("F", 16), ("SQRT_BITS", 31), ("DIV_BITS", 31), ("ITER", 1), ("SUBSTEPS", 1),
     ("EN_GRAVITY", 1), ("EN_MOUSE", 1), ("EN_CONSTRAINTS", 1), ("EN_DAMPING", 0),
+    ("RULE", 0),  # the centred rule of reference 000
 ]
 
 # name: (M units, K nodes per unit)
@@ -150,16 +151,21 @@ def digest(*parts):
     return h.hexdigest()
 
 
-def stamp_fresh(stamp, inputs, key):
+def file_digest(paths):
+    h = hashlib.sha256()
+    for p in paths:
+        h.update(p.encode() + b"\0")
+        with open(p, "rb") as f:
+            h.update(f.read())
+    return h.hexdigest()
+
+
+def stamp_fresh(stamp, key):
     try:
-        st = os.stat(stamp)
         with open(stamp) as f:
-            data = json.load(f)
+            return json.load(f).get("key") == key
     except (OSError, ValueError):
         return False
-    if data.get("key") != key:
-        return False
-    return all(os.stat(i).st_mtime <= st.st_mtime for i in inputs)
 
 
 def write_stamp(stamp, key, **extra):
@@ -215,10 +221,11 @@ def run_flow(config, flow, build, gen, srcs, quiet=False):
     ver = tool_version("yosys")
     if ver is None:
         raise Failure("yosys not found (make bootstrap installs it)")
-    key = digest(ys, ver)
+    # The key covers the commands, the tool and the sources' contents, read before the
+    # run: a source edited while Yosys runs makes the next run see a different key.
+    key = digest(ys, ver, file_digest(list(srcs) + [os.path.join(gen, "strand_regs.vh")]))
     stamp = os.path.join(d, f"{flow}.ok")
-    inputs = list(srcs) + [os.path.join(gen, "strand_regs.vh")]
-    if stamp_fresh(stamp, inputs, key):
+    if stamp_fresh(stamp, key):
         return "cached"
     if os.path.exists(stamp):
         os.remove(stamp)
@@ -254,9 +261,11 @@ def run_pnr(config, build):
     ver = tool_version("nextpnr-ice40")
     if ver is None:
         raise Failure("nextpnr-ice40 not found (make bootstrap installs it)")
-    key = digest(" ".join(pnr_cmd()), ver)
+    with open(os.path.join(d, "ice40.ok")) as f:
+        netlist_key = json.load(f)["key"]
+    key = digest(" ".join(pnr_cmd()), ver, netlist_key)
     stamp = os.path.join(d, "pnr.ok")
-    if stamp_fresh(stamp, [os.path.join(d, "ice40.json"), os.path.join(d, "ice40.ok")], key):
+    if stamp_fresh(stamp, key):
         return "cached"
     if os.path.exists(stamp):
         os.remove(stamp)

@@ -8,8 +8,9 @@
 # generic `synth`, synth_ice40 -dsp (and nextpnr-ice40 for the UP5K), synth_ecp5 and
 # synth_xilinx, SYNTH_JOBS at a time; then docs/resources.md is rewritten from the
 # results. Raw logs and netlists stay in $(BUILD)/synth/<build>/; a flow whose RTL,
-# generated header and commands are unchanged is not run again. A latch or a failed
-# `check -assert` fails the target; a build that does not fit the UP5K does not.
+# generated header and commands are unchanged (by content) is not run again. A latch
+# or a failed `check -assert` fails the target; a build that does not fit the UP5K
+# does not.
 # test-synth-check prints one line, "PASS synth-check (...)" or "FAIL synth-check: ...".
 # All variables are prefixed SYNTH_ (BUILD, GEN, TOP_SRC and JOBS come from the top
 # Makefile when it includes this file).
@@ -19,8 +20,8 @@ SYNTH_SAVED_GOAL := $(.DEFAULT_GOAL)
 BUILD ?= build
 SYNTH_GEN  := $(if $(GEN),$(GEN),$(BUILD)/gen)
 SYNTH_DIR  := $(BUILD)/synth
-SYNTH_SRC  := $(if $(TOP_SRC),$(TOP_SRC),rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/toward.v \
-              rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v)
+# TOP_SRC (the top Makefile's list) if set, else every RTL file: `hierarchy -top` drops the rest.
+SYNTH_SRC  := $(if $(TOP_SRC),$(TOP_SRC),$(sort $(wildcard rtl/*.v)))
 SYNTH_JOBS ?= $(if $(JOBS),$(JOBS),2)
 SYNTH_PY   := python3 scripts/synth.py
 SYNTH_DOC  := docs/resources.md
