@@ -61,6 +61,7 @@ help:
 	@echo "  make fuzz [FUZZ_SECONDS=600]  a longer bounded run of the scene-parser fuzzer (libFuzzer, ASan, UBSan)"
 	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model"
 	@echo "  make stability   regenerate docs/stability.md and docs/img/stability_euler_verlet.png"
+	@echo "  make synth       Yosys (generic, iCE40 + nextpnr, ECP5, Xilinx) for the 4x5, 8x8, 16x16 builds -> docs/resources.md"
 	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
 	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
@@ -187,7 +188,7 @@ lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 # ---- everything ----
 
 TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep \
-              test-stability test-fuzz test-accuracy
+              test-stability test-fuzz test-accuracy test-synth-check
 
 test: bootstrap
 	@scripts/run_tests.sh $(TEST_STEPS)
@@ -198,3 +199,4 @@ clean:
 -include tb/units.mk
 include scripts/stability.mk
 include scripts/accuracy.mk
+include tb/synth.mk
