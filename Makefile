@@ -27,14 +27,15 @@ STRAND    := $(BUILD)/strand
 SCENES    := $(wildcard sim/scenes/*.scene)
 
 # The RTL: the top and everything under it (rtl/ holds one module per file).
-TOP_SRC   := rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v \
+TOP_SRC   := rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v rtl/spring_force.v \
              rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v
 # Scenes whose every frame the RTL must reproduce bit for bit (tb/scenes/ hold test-only builds).
 RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 # Parameter sets the top is linted with, beyond its defaults.
 LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
              "-GM=16 -GK=16 -GITER=4 -GSUBSTEPS=3 -GSQRT_BITS=12 -GDIV_BITS=9" \
-             "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8" "-GRULE=1 -GM=3 -GK=4 -GITER=2"
+             "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8" "-GRULE=1 -GM=3 -GK=4 -GITER=2" \
+             "-GEN_SPRINGS=1'b1 -GRULE=1 -GSUBSTEPS=2" "-GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8 -GM=1"
 
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
@@ -127,9 +128,11 @@ bench: bootstrap
 # Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).
 LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_rope.scene:120 sim/scenes/ref002_verlet.scene:40 \
                    sim/scenes/hard_collapse.scene sim/scenes/hard_saturate.scene:300 sim/scenes/hard_narrow_q10_8.scene:200 \
-                   sim/scenes/hard_mouse_impulse.scene:40
+                   sim/scenes/hard_mouse_impulse.scene:40 sim/scenes/ref004_chain.scene:60 sim/scenes/hard_stiff_k10000.scene:40 \
+                   sim/scenes/ref002_verlet_springs.scene:2
 # Every hard case the RTL supports (issue F), in lockstep: make lockstep-hard (longer; not in make test).
 HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 hard_many_iterations:10 \
+            hard_stiff_k1000:200 hard_stiff_k10000:200 \
             hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
 
 # make test: the RTL and reference scenes, the planted faults, random initial values, 50 random scenes

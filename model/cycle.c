@@ -49,17 +49,26 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->mouse = MOUSE_IMPULSE;
     sc->en_constraints = hp->en_constraints;
     sc->rule = hp->rule ? RULE_PAIRWISE : RULE_CENTRED;
-    if (hp->en_constraints && hp->rule && n > 1) { /* the links pair_sequencer walks; rest comes from DIST */
-        sc->n_edges = n - 1;
+    sc->en_springs = hp->en_springs;
+    /* The links the pair sequencers walk, as the scene reader lays a chain's edges out:
+       rods (walked by the pairwise rule), then springs; every rest length comes from DIST. */
+    if (n > 1 && (hp->en_constraints || hp->en_springs)) {
+        int links = n - 1, e = 0;
+        sc->n_edges = links * ((hp->en_constraints ? 1 : 0) + (hp->en_springs ? 1 : 0));
         sc->edges = calloc((size_t)sc->n_edges, sizeof *sc->edges);
         if (!sc->edges) return false;
-        for (int i = 0; i + 1 < n; i++) sc->edges[i] = (scene_edge){i, i + 1, EDGE_ROD, 0};
+        if (hp->en_constraints)
+            for (int i = 0; i < links; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, 0};
+        c->spring0 = e;
+        if (hp->en_springs)
+            for (int i = 0; i < links; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, 0};
     }
     sc->pos = calloc((size_t)n, sizeof *sc->pos);
     sc->prev = calloc((size_t)n, sizeof *sc->prev);
     sc->pinned = calloc((size_t)n, sizeof *sc->pinned);
     if (!sc->pos || !sc->prev || !sc->pinned || !sim_fx_init(&c->s, sc, &sc->fmt)) return false;
     c->lt = hp->sqrt_bits + hp->div_bits + 9;
+    c->ls = hp->sqrt_bits + 2 * hp->div_bits + 15;
     return true;
 }
 
@@ -81,10 +90,21 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     o->rd_y = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_y[c->rd_u_q]) : 0;
     o->phase = c->phase;
     o->fv = c->done;
-    o->fec = c->hp.en_constraints && c->counter == m * c->hp.k - (c->hp.rule ? 1 : 0);
-    o->uidx = (uint32_t)c->uidx;
-    o->nidx = (uint32_t)c->nidx;
-    o->counter = (uint32_t)c->counter;
+    o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == m * c->hp.k - (c->hp.rule ? 1 : 0);
+    /* strand_top shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
+    if (c->phase == PH_FORCE) {
+        o->uidx = (uint32_t)c->force.uidx;
+        o->nidx = (uint32_t)c->force.nidx;
+        o->counter = (uint32_t)c->force.counter;
+    } else if (c->hp.rule) {
+        o->uidx = (uint32_t)c->pair.uidx;
+        o->nidx = (uint32_t)c->pair.nidx;
+        o->counter = (uint32_t)c->pair.counter;
+    } else {
+        o->uidx = (uint32_t)c->uidx;
+        o->nidx = (uint32_t)c->nidx;
+        o->counter = (uint32_t)c->counter;
+    }
     o->units = m;
     for (int u = 0; u < m; u++) {
         o->wb_valid[u] = c->wb_valid[u];
@@ -105,7 +125,10 @@ static void reset_all(cyc_model *c)
     for (int k = 0; k < 3; k++) c->s.gravity[k] = c->s.box[k] = c->s.mouse[k] = 0;
     c->s.dist = c->s.impulse = c->s.damping = 0;
     for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
-    c->pq_write_b = false;
+    for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
+    c->s.ks = c->s.kd = 0;
+    memset(&c->pair, 0, sizeof c->pair);   /* PQ_IDLE, counters 0 */
+    memset(&c->force, 0, sizeof c->force);
     c->s.mouse_down = false;
     c->phase = PH_IDLE;
     c->substep = 0;
@@ -138,6 +161,91 @@ static void lane_write(cyc_model *c, bool *written, int u, int idx, int node)
     c->wb_y[u] = c->s.pos[node][1];
 }
 
+/*
+ * pair_sequencer (one instance): the writes of a link's ends, then the control.
+ * spring: the spring pass (spring_edge() on the link's spring edge; the forces are
+ * not positions, so nothing shows on the write-back lanes); else the pairwise
+ * constraints (pair_edge() on the link's rod).
+ */
+static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring, bool *written)
+{
+    const hw_params *hp = &c->hp;
+    const int k = hp->k, n = hp->m * k, iter = spring ? 1 : hp->iter;
+    const int links = n - 1;
+    const bool last_link = q->counter == (links > 0 ? links - 1 : 0);
+    const bool last_iter = q->iter == iter - 1;
+    const int a = q->uidx * k + q->nidx, b = a + 1;
+    if (q->state == PQ_WR_A && spring) {
+        sim_fx_spring_edge(&c->s, c->spring0 + a); /* a's force now, b's next cycle: nothing reads between */
+    } else if (q->state == PQ_WR_A) { /* pair_edge() now; b's half is written next cycle */
+        bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
+        q->write_b = false;
+        if (!(fa && fb)) {
+            long skipped = c->s.skipped;
+            fx_t b_old[3];
+            memcpy(b_old, c->s.pos[b], sizeof b_old);
+            sim_fx_pair_edge(&c->s, a);
+            bool valid = c->s.skipped == skipped;
+            memcpy(q->b_new, c->s.pos[b], sizeof q->b_new);
+            memcpy(c->s.pos[b], b_old, sizeof b_old);
+            if (valid && !fa) lane_write(c, written, q->uidx, q->nidx, a);
+            q->write_b = valid && !fb;
+        }
+    } else if (q->state == PQ_WR_B && q->write_b) {
+        memcpy(c->s.pos[b], q->b_new, sizeof q->b_new);
+        lane_write(c, written, b / k, b % k, b);
+        q->write_b = false;
+    }
+    int next = q->state;
+    q->done = false;
+    switch (q->state) {
+    case PQ_IDLE:
+        if (start) {
+            q->iter = 0;
+            q->uidx = q->nidx = q->counter = 0;
+            if (n < 2) q->done = true;
+            else next = PQ_RD_A;
+        }
+        break;
+    case PQ_RD_A:
+        if (q->counter == links) q->counter = 0;
+        next = PQ_RD_B;
+        break;
+    case PQ_RD_B: next = PQ_GO; break;
+    case PQ_GO:
+        q->timer = spring ? c->ls : c->lt;
+        next = PQ_WAIT;
+        break;
+    case PQ_WAIT:
+        if (--q->timer == 0) next = PQ_WR_A;
+        break;
+    case PQ_WR_A: next = PQ_WR_B; break;
+    case PQ_WR_B:
+        if (last_link) {
+            q->counter = links;
+            if (last_iter) {
+                q->done = true;
+                next = PQ_IDLE;
+            } else {
+                q->iter++;
+                q->uidx = q->nidx = 0;
+                next = PQ_RD_A;
+            }
+        } else {
+            q->counter++;
+            if (q->nidx == k - 1) {
+                q->nidx = 0;
+                q->uidx++;
+            } else {
+                q->nidx++;
+            }
+            next = PQ_RD_A;
+        }
+        break;
+    }
+    q->state = next;
+}
+
 void cyc_edge(cyc_model *c, const cyc_inputs *in)
 {
     const hw_params *hp = &c->hp;
@@ -157,9 +265,13 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1);
     const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
     const bool verlet_end = c->phase == PH_VERLET && c->done;
-    const bool substep_end = (verlet_end && !hp->en_constraints) || (c->phase == PH_CONSTRAIN && c->sq_done);
+    const bool seq_done = hp->rule ? c->pair.done : c->sq_done;
+    const bool force_done = c->force.done;
+    const bool substep_end = (verlet_end && !hp->en_constraints) || (c->phase == PH_CONSTRAIN && seq_done);
     const bool last_substep = c->substep == hp->substeps - 1;
-    const bool verlet_start = frame_start || (substep_end && !last_substep);
+    const bool substep_start = frame_start || (substep_end && !last_substep);
+    const bool force_start = substep_start && hp->en_springs;
+    const bool verlet_start = (substep_start && !hp->en_springs) || (c->phase == PH_FORCE && force_done);
     const bool seq_start = verlet_end && hp->en_constraints;
 
     /* node_unit port B: every unit samples node rd_n before this edge's writes. */
@@ -186,6 +298,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
                 if (hp->en_mouse) sim_fx_mouse_node(&c->s, node);
                 lane_write(c, written, u, c->vidx, node);
             }
+            /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
+            for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
         }
     }
     /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
@@ -195,84 +309,12 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     }
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
-    /* pair_sequencer: the writes of a link's ends, then the control. */
-    if (hp->rule) {
-        const int links = n - 1;
-        const bool last_link = c->counter == (links > 0 ? links - 1 : 0);
-        const bool last_iter = c->sq_iter == hp->iter - 1;
-        const int a = c->uidx * k + c->nidx, b = a + 1;
-        if (c->sq_state == PQ_WR_A) { /* pair_edge() now; b's half is written next cycle */
-            bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
-            c->pq_write_b = false;
-            if (!(fa && fb)) {
-                long skipped = c->s.skipped;
-                fx_t b_old[3];
-                memcpy(b_old, c->s.pos[b], sizeof b_old);
-                sim_fx_pair_edge(&c->s, a);
-                bool valid = c->s.skipped == skipped;
-                memcpy(c->pq_b_new, c->s.pos[b], sizeof c->pq_b_new);
-                memcpy(c->s.pos[b], b_old, sizeof b_old);
-                if (valid && !fa) lane_write(c, written, c->uidx, c->nidx, a);
-                c->pq_write_b = valid && !fb;
-            }
-        } else if (c->sq_state == PQ_WR_B && c->pq_write_b) {
-            memcpy(c->s.pos[b], c->pq_b_new, sizeof c->pq_b_new);
-            lane_write(c, written, b / k, b % k, b);
-            c->pq_write_b = false;
-        }
-        for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
-        int next = c->sq_state;
-        c->sq_done = false;
-        switch (c->sq_state) {
-        case PQ_IDLE:
-            if (seq_start) {
-                c->sq_iter = 0;
-                c->uidx = c->nidx = c->counter = 0;
-                if (n < 2) c->sq_done = true;
-                else next = PQ_RD_A;
-            }
-            break;
-        case PQ_RD_A:
-            if (c->counter == links) c->counter = 0;
-            next = PQ_RD_B;
-            break;
-        case PQ_RD_B: next = PQ_GO; break;
-        case PQ_GO:
-            c->sq_timer = c->lt;
-            next = PQ_WAIT;
-            break;
-        case PQ_WAIT:
-            if (--c->sq_timer == 0) next = PQ_WR_A;
-            break;
-        case PQ_WR_A: next = PQ_WR_B; break;
-        case PQ_WR_B:
-            if (last_link) {
-                c->counter = links;
-                if (last_iter) {
-                    c->sq_done = true;
-                    next = PQ_IDLE;
-                } else {
-                    c->sq_iter++;
-                    c->uidx = c->nidx = 0;
-                    next = PQ_RD_A;
-                }
-            } else {
-                c->counter++;
-                if (c->nidx == k - 1) {
-                    c->nidx = 0;
-                    c->uidx++;
-                } else {
-                    c->nidx++;
-                }
-                next = PQ_RD_A;
-            }
-            break;
-        }
-        c->sq_state = next;
-    }
+    if (hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
+    if (hp->en_springs) pair_seq_edge(c, &c->force, force_start, true, written);
+    for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
     /* chain_sequencer control. */
-    if (!hp->rule) {
+    if (!hp->rule && hp->en_constraints) {
         const bool last_node = c->counter == n - 1;
         const bool last_iter = c->sq_iter == hp->iter - 1;
         int next = c->sq_state;
@@ -345,7 +387,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->init_pos[0] = c->start[0];
             c->init_pos[1] = c->start[1];
         } else if (in->step) {
-            c->phase = PH_VERLET;
+            c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
             c->substep = 0;
             c->mouse_q[0] = from_word(f, in->mouse_x);
             c->mouse_q[1] = from_word(f, in->mouse_y);
@@ -363,6 +405,9 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         }
         if (c->init_count++ == n - 1) c->phase = PH_IDLE;
         break;
+    case PH_FORCE:
+        if (force_done) c->phase = PH_VERLET;
+        break;
     case PH_VERLET:
         if (seq_start) c->phase = PH_CONSTRAIN;
         break;
@@ -373,7 +418,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->phase = PH_IDLE;
             c->frame_done = true;
         } else {
-            c->phase = PH_VERLET;
+            c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
             c->substep++;
         }
     }
@@ -392,6 +437,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         case STRAND_REG_BOX_X: c->s.box[0] = v; break;
         case STRAND_REG_BOX_Y: c->s.box[1] = v; break;
         case STRAND_REG_DAMPING: c->s.damping = v; break;
+        case STRAND_REG_KS: c->s.ks = v; break;
+        case STRAND_REG_KD: c->s.kd = v; break;
         case STRAND_REG_START_X: c->start[0] = v; break;
         case STRAND_REG_START_Y: c->start[1] = v; break;
         case STRAND_REG_STEP_X: c->step[0] = v; break;

@@ -25,7 +25,7 @@ extern "C" {
 
 #define CYC_MAX_UNITS 256
 
-enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3 };
+enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4 };
 enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
 enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };                 /* pair_sequencer */
 
@@ -52,12 +52,23 @@ typedef struct {
     uint32_t wb_idx[CYC_MAX_UNITS], wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
 } cyc_outputs;
 
+/* pair_sequencer: one instance (the pairwise constraints, or the spring pass). */
+typedef struct {
+    int state, iter, timer;
+    int uidx, nidx, counter;
+    bool done;
+    bool write_b; /* constraints: b's new position waits for its write cycle */
+    fx_t b_new[3];
+} cyc_pair_seq;
+
 typedef struct {
     hw_params hp;
     scene sc;    /* a chain of M x K nodes with the build's effects; pins come from PIN writes */
     sim_fx s;    /* node positions and the run-time constants */
     long cycle;  /* edges since cyc_init */
     int lt;      /* toward's latency (cycles) */
+    int ls;      /* spring_force's latency (cycles) */
+    int spring0; /* the first spring edge of sc (springs follow the rods) */
 
     /* strand_top */
     int phase, substep;
@@ -74,12 +85,12 @@ typedef struct {
     bool wb_valid[CYC_MAX_UNITS];
     uint32_t wb_idx[CYC_MAX_UNITS];
     fx_t wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
-    /* chain_sequencer or pair_sequencer (rule 1) */
+    /* chain_sequencer (rule 0) */
     int sq_state, sq_iter, sq_timer;
     int uidx, nidx, counter;
     bool sq_done;
-    bool pq_write_b;  /* pair_sequencer: b's new position waits for its write cycle */
-    fx_t pq_b_new[3];
+    cyc_pair_seq pair;   /* pair_sequencer, the constraints (rule 1) */
+    cyc_pair_seq force;  /* pair_sequencer, the spring pass (EN_SPRINGS) */
 } cyc_model;
 
 /* The model of a build (all nodes at 0, nothing pinned, registers 0: strand_top after reset). */

@@ -28,7 +28,6 @@ const char *hw_check(const scene *sc, char *err, size_t len)
     if (sc->body != BODY_CHAIN) return reject(sc, "graph", err, len, "graph bodies (they need the edge sequencer)");
     if (sc->dim != 2) return reject(sc, "scene", err, len, "3D scenes");
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
-    if (sc->en_springs) return reject(sc, "springs", err, len, "springs");
     if (sc->en_ground) return reject(sc, "ground", err, len, "ground collision");
     if (sc->en_mouse && sc->mouse != MOUSE_IMPULSE) return reject(sc, "mouse", err, len, "the grab form of the mouse");
     for (int i = 0; i < sc->n_nodes; i++)
@@ -54,6 +53,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->en_mouse = sc->en_mouse;
     hp->en_constraints = sc->en_constraints;
     hp->rule = sc->rule == RULE_PAIRWISE ? 1 : 0;
+    hp->en_springs = sc->en_springs;
     hp->uw = hp->m > 1 ? clog2(hp->m) : 1;
     hp->iw = hp->k > 1 ? clog2(hp->k) : 1;
     hp->cw = clog2((long)hp->m * hp->k + 1);
@@ -75,7 +75,9 @@ long hw_cycles_per_frame(const hw_params *hp)
     long n = (long)hp->m * hp->k;
     long pass = hp->rule == 0 ? 2 + n * (2 * toward + 2)         /* centred: load C and D, then every node: two targets, slide */
                               : (n - 1) * (toward + 5);          /* pairwise: every link: read a, b, excess, write a, b */
+    long spring = hp->sqrt_bits + 2 * hp->div_bits + 15;         /* spring_force.v: start cycle to done cycle */
     long substep = hp->en_constraints ? hp->k + 2 + hp->iter * pass : hp->k + 1;
+    if (hp->en_springs) substep += 1 + (n - 1) * (spring + 5); /* the spring pass: every link, as pairwise */
     return hp->substeps * substep + 1;
 }
 
@@ -97,6 +99,8 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
     PUT(STRAND_REG_BOX_X, s->box[0]);
     PUT(STRAND_REG_BOX_Y, s->box[1]);
     PUT(STRAND_REG_DAMPING, s->damping);
+    PUT(STRAND_REG_KS, s->ks);
+    PUT(STRAND_REG_KD, s->kd);
     PUT(STRAND_REG_START_X, fx_from_double(f, sc->chain_start[0]));
     PUT(STRAND_REG_START_Y, fx_from_double(f, sc->chain_start[1]));
     PUT(STRAND_REG_STEP_X, fx_from_double(f, sc->chain_step[0]));
@@ -166,7 +170,8 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps);
         fprintf(f, "`define STRAND_EN_GRAVITY 1'b%d\n`define STRAND_EN_DAMPING 1'b%d\n`define STRAND_EN_MOUSE 1'b%d\n", hp.en_gravity,
                 hp.en_damping, hp.en_mouse);
-        fprintf(f, "`define STRAND_EN_CONSTRAINTS 1'b%d\n`define STRAND_RULE %d\n", hp.en_constraints, hp.rule);
+        fprintf(f, "`define STRAND_EN_CONSTRAINTS 1'b%d\n`define STRAND_RULE %d\n`define STRAND_EN_SPRINGS 1'b%d\n", hp.en_constraints,
+                hp.rule, hp.en_springs);
         fprintf(f, "`define STRAND_FRAMES %d\n`define STRAND_NCONFIG %d\n`define STRAND_CYCLES_PER_FRAME %ld\n", frames, nw,
                 hw_cycles_per_frame(&hp));
         ok = fclose(f) == 0;
@@ -178,7 +183,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps);
         fprintf(f, "#define STRAND_EN_GRAVITY %d\n#define STRAND_EN_DAMPING %d\n#define STRAND_EN_MOUSE %d\n#define STRAND_EN_CONSTRAINTS %d\n",
                 hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints);
-        fprintf(f, "#define STRAND_RULE %d\n", hp.rule);
+        fprintf(f, "#define STRAND_RULE %d\n#define STRAND_EN_SPRINGS %d\n", hp.rule, hp.en_springs);
         ok = fclose(f) == 0;
     } else ok = false;
     if (ok && (f = open_in(dir, "config.hex", err, len))) {

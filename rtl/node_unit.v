@@ -8,6 +8,7 @@
  * (started by verlet_start) updates node 0 .. K-1, one node per clock, each with
  * model/engine_body.h verlet_node() and then mouse_node():
  *     v  = x - px;  v = v - v*d (EN_DAMPING);  px = x;  x = x + v;  x = x + g h^2 (EN_GRAVITY)
+ *     x = x + acc (EN_SPRINGS: the spring force of this substep, then acc = 0)
  *     mouse (EN_MOUSE, button down, |mouse - x| < box on both axes):
  *         px.x = (mouse.x < px.x) ? x.x + a : x.x - a
  * Every operation is a saturating fx_add/fx_mul, in the model's order. Pinned
@@ -31,6 +32,7 @@ module node_unit #(
     parameter [0:0]  EN_GRAVITY = 1'b1,  // add g h^2 in the Verlet step
     parameter [0:0]  EN_DAMPING = 1'b0,  // Verlet damping v -= v * d (two multipliers)
     parameter [0:0]  EN_MOUSE = 1'b1,  // reference-000 mouse impulse
+    parameter [0:0]  EN_SPRINGS = 1'b0,  // per-node spring force: storage, added in the Verlet step
     /* verilator lint_off UNUSEDPARAM */
     // read only by the test-only planted fault (STRAND_FAULTS)
     parameter integer UNIT_ID  = 0      // this unit's number
@@ -57,6 +59,13 @@ module node_unit #(
     output wire [W-1:0]  a_x,
     output wire [W-1:0]  a_y,
     output wire          a_pinned,
+    output wire [W-1:0]  a_px,         // previous position (the spring pass's velocities)
+    output wire [W-1:0]  a_py,
+    output wire [W-1:0]  a_accx,       // the spring force gathered so far (EN_SPRINGS; else 0)
+    output wire [W-1:0]  a_accy,
+    input  wire          acc_we,       // the spring pass: write node w_idx's force
+    input  wire [W-1:0]  acc_wx,
+    input  wire [W-1:0]  acc_wy,
     input  wire          w_en,         // write node w_idx
     input  wire [IW-1:0] w_idx,
     input  wire [W-1:0]  w_x,
@@ -165,11 +174,13 @@ module node_unit #(
     assign a_x      = q_x;
     assign a_y      = q_y;
     assign a_pinned = q_pin;
+    assign a_px     = q_px;
+    assign a_py     = q_py;
 
     // ---- the Verlet step of one node, from port A's data ----
     // The per-adder saturation flags are not used: saturation is the result itself.
     /* verilator lint_off PINCONNECTEMPTY */
-    wire [W-1:0] vx, vy, vx_d, vy_d, x1, y1, nx, ny;
+    wire [W-1:0] vx, vy, vx_d, vy_d, x1, y1, gx, gy, nx, ny;
     fx_add #(.W(W)) u_vx (.sub(1'b1), .a(q_x), .b(q_px), .y(vx), .sat());
     fx_add #(.W(W)) u_vy (.sub(1'b1), .a(q_y), .b(q_py), .y(vy), .sat());
 
@@ -192,12 +203,53 @@ module node_unit #(
 
     generate
         if (EN_GRAVITY) begin : g_gravity
-            fx_add #(.W(W)) u_gx (.sub(1'b0), .a(x1), .b(gdt2_x), .y(nx), .sat());
-            fx_add #(.W(W)) u_gy (.sub(1'b0), .a(y1), .b(gdt2_y), .y(ny), .sat());
+            fx_add #(.W(W)) u_gx (.sub(1'b0), .a(x1), .b(gdt2_x), .y(gx), .sat());
+            fx_add #(.W(W)) u_gy (.sub(1'b0), .a(y1), .b(gdt2_y), .y(gy), .sat());
         end else begin : g_no_gravity
-            assign nx = x1;
-            assign ny = y1;
+            assign gx = x1;
+            assign gy = y1;
             wire unused_gravity = &{1'b0, gdt2_x, gdt2_y};
+        end
+    endgenerate
+
+    // ---- the spring force of this substep (a pass of spring edges gathered it) ----
+    // The Verlet pass consumes each node's force and clears it (pinned nodes too), so
+    // the next spring pass starts from 0, as model/engine_body.h force_pass() does.
+    generate
+        if (EN_SPRINGS) begin : g_springs
+            reg [W-1:0] ax_mem [0:K-1];
+            reg [W-1:0] ay_mem [0:K-1];
+            reg [W-1:0] q_ax, q_ay;
+            always @(posedge clk)
+                if ({1'b0, a_addr} < K_COUNT) begin
+                    q_ax <= ax_mem[a_addr];
+                    q_ay <= ay_mem[a_addr];
+                end
+            integer j;
+            always @(posedge clk) begin
+                if (reset) begin
+                    for (j = 0; j < K; j = j + 1) begin
+                        ax_mem[j] <= {W{1'b0}};
+                        ay_mem[j] <= {W{1'b0}};
+                    end
+                end else if (running_q && {1'b0, vidx_q} < K_COUNT) begin
+                    ax_mem[vidx_q] <= {W{1'b0}};
+                    ay_mem[vidx_q] <= {W{1'b0}};
+                end else if (acc_we && {1'b0, w_idx} < K_COUNT) begin
+                    ax_mem[w_idx] <= acc_wx;
+                    ay_mem[w_idx] <= acc_wy;
+                end
+            end
+            assign a_accx = q_ax;
+            assign a_accy = q_ay;
+            fx_add #(.W(W)) u_fx (.sub(1'b0), .a(gx), .b(q_ax), .y(nx), .sat());
+            fx_add #(.W(W)) u_fy (.sub(1'b0), .a(gy), .b(q_ay), .y(ny), .sat());
+        end else begin : g_no_springs
+            assign nx = gx;
+            assign ny = gy;
+            assign a_accx = {W{1'b0}};
+            assign a_accy = {W{1'b0}};
+            wire unused_springs = &{1'b0, acc_we, acc_wx, acc_wy};
         end
     endgenerate
 

@@ -2,8 +2,17 @@
 `timescale 1ns / 1ps
 
 /*
- * pair_sequencer - the pairwise constraint pass (references 001 struts, 002) over
- * the links of a chain of M x K nodes.
+ * pair_sequencer - a pass over the links of a chain of M x K nodes: the pairwise
+ * constraint pass (references 001 struts, 002; SPRING = 0) or the spring force pass
+ * (references 001, 004; SPRING = 1).
+ *
+ * SPRING = 1: for each link, model/engine_body.h spring_edge(): the spring_force
+ * datapath gives the force F on a (-F on b) from both ends' positions and previous
+ * positions; the ends' gathered forces become acc_a + F and acc_b - F (saturating),
+ * written through the units' force port (wr_* carry the force); pins do not matter
+ * (pinned nodes ignore their force); a zero length writes nothing. Each link then
+ * takes LS + 5 cycles, LS = SQRT_BITS + 2 DIV_BITS + 15. The rest of this header
+ * describes SPRING = 0.
  *
  * Walks the links (a, b) = (i, i+1), i = 0 .. N-2, in order, ITER times, and for
  * each computes model/engine_body.h pair_edge(): the excess e = d - d * rest/|d|
@@ -31,21 +40,28 @@ module pair_sequencer #(
     parameter integer CW        = 5,     // counter width, holds M*K
     parameter integer ITER      = 1,     // passes per constraint phase
     parameter integer SQRT_BITS = W - 1, // root bits resolved
-    parameter integer DIV_BITS  = W - 1  // quotient bits resolved
+    parameter integer DIV_BITS  = W - 1, // quotient bits resolved
+    parameter [0:0]   SPRING    = 1'b0   // 0: pairwise constraint, 1: spring force
 ) (
     input  wire          clk,
     input  wire          reset,      // synchronous, active high
     input  wire          start,      // one-cycle pulse: run ITER passes
     output reg           done,       // one-cycle pulse after the last pass
     input  wire [W-1:0]  rest_len,   // rest length of every link
+    input  wire [W-1:0]  ks,         // SPRING: stiffness and damping, scaled (model init())
+    input  wire [W-1:0]  kd,
 
     output reg  [UW-1:0] rd_uidx,    // storage read address (combinational)
     output reg  [IW-1:0] rd_nidx,
     input  wire [W-1:0]  rd_x,       // its data, the next cycle
     input  wire [W-1:0]  rd_y,
     input  wire          rd_pinned,
+    input  wire [W-1:0]  rd_px,      // SPRING: previous position and gathered force
+    input  wire [W-1:0]  rd_py,
+    input  wire [W-1:0]  rd_accx,
+    input  wire [W-1:0]  rd_accy,
 
-    output wire          wr_en,      // write one end of the link now
+    output wire          wr_en,      // write one end of the link now (SPRING: its force)
     output wire [UW-1:0] wr_uidx,
     output wire [IW-1:0] wr_nidx,
     output wire [W-1:0]  wr_x,
@@ -96,6 +112,8 @@ module pair_sequencer #(
     reg [ITW-1:0] iter_q;
     reg [W-1:0]   ax, ay, bx, by;       // the link's ends
     reg           a_pin, b_pin;
+    reg [W-1:0]   apx, apy, aax, aay;   // SPRING: a's previous position and force, b's force
+    reg [W-1:0]   bax, bay;
     reg [W-1:0]   nax, nay, nbx, nby;   // their new positions
     reg           wa, wb;               // which are written
     wire [UW-1:0] b_u;
@@ -105,29 +123,52 @@ module pair_sequencer #(
     wire last_link = counter == LAST_LINK;
     wire last_iter = iter_q == ITER_LAST;
 
-    // ---- the datapath: the excess, then the split ----
+    // ---- the datapath ----
     wire         t_done, t_valid;
-    wire [W-1:0] ex, ey;   // e = d - d * rest/|d|
-    /* verilator lint_off PINCONNECTEMPTY */
-    // busy is not needed: the FSM waits for done
-    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_toward (
-        .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
-        .p_x(ax), .p_y(ay), .c_x(rd_x), .c_y(rd_y), .rest_len(rest_len),  // b arrives as toward starts
-        .busy(), .done(t_done), .t_x(ex), .t_y(ey), .valid(t_valid));
-    /* verilator lint_on PINCONNECTEMPTY */
-    wire [W-1:0] hx, hy;   // e / 2
-    fx_avg #(.W(W)) u_hx (.a(ex), .b({W{1'b0}}), .y(hx));
-    fx_avg #(.W(W)) u_hy (.a(ey), .b({W{1'b0}}), .y(hy));
-    wire         both_free = !a_pin && !b_pin;
-    wire [W-1:0] da_x = both_free ? hx : ex, da_y = both_free ? hy : ey;  // what a and b move by
-    wire [W-1:0] sum_ax, sum_ay, dif_bx, dif_by;
-    /* verilator lint_off PINCONNECTEMPTY */
-    // saturation flags are not needed: the saturated value is the result
-    fx_add #(.W(W)) u_ax (.sub(1'b0), .a(ax), .b(da_x), .y(sum_ax), .sat());
-    fx_add #(.W(W)) u_ay (.sub(1'b0), .a(ay), .b(da_y), .y(sum_ay), .sat());
-    fx_add #(.W(W)) u_bx (.sub(1'b1), .a(bx), .b(da_x), .y(dif_bx), .sat());
-    fx_add #(.W(W)) u_by (.sub(1'b1), .a(by), .b(da_y), .y(dif_by), .sat());
-    /* verilator lint_on PINCONNECTEMPTY */
+    wire [W-1:0] sum_ax, sum_ay, dif_bx, dif_by;  // the new values of a and b
+    generate
+        if (SPRING) begin : g_spring
+            // F from both ends; a's force + F, b's force - F
+            wire [W-1:0] fx, fy;
+            /* verilator lint_off PINCONNECTEMPTY */
+            // busy is not needed: the FSM waits for done; saturation is the result itself
+            spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_force (
+                .clk(clk), .reset(reset), .start(state_q == S_GO),
+                .a_x(ax), .a_y(ay), .a_px(apx), .a_py(apy),
+                .b_x(rd_x), .b_y(rd_y), .b_px(rd_px), .b_py(rd_py),  // b arrives as the force starts
+                .rest_len(rest_len), .ks(ks), .kd(kd),
+                .busy(), .done(t_done), .f_x(fx), .f_y(fy), .valid(t_valid));
+            fx_add #(.W(W)) u_ax (.sub(1'b0), .a(aax), .b(fx), .y(sum_ax), .sat());
+            fx_add #(.W(W)) u_ay (.sub(1'b0), .a(aay), .b(fy), .y(sum_ay), .sat());
+            fx_add #(.W(W)) u_bx (.sub(1'b1), .a(bax), .b(fx), .y(dif_bx), .sat());
+            fx_add #(.W(W)) u_by (.sub(1'b1), .a(bay), .b(fy), .y(dif_by), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+            wire unused_pins = &{1'b0, a_pin, b_pin, bx, by};
+        end else begin : g_pair
+            // the excess e = d - d * rest/|d|, then the split
+            wire [W-1:0] ex, ey;
+            /* verilator lint_off PINCONNECTEMPTY */
+            // busy is not needed: the FSM waits for done
+            toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_toward (
+                .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
+                .p_x(ax), .p_y(ay), .c_x(rd_x), .c_y(rd_y), .rest_len(rest_len),  // b arrives as toward starts
+                .busy(), .done(t_done), .t_x(ex), .t_y(ey), .valid(t_valid));
+            /* verilator lint_on PINCONNECTEMPTY */
+            wire [W-1:0] hx, hy;   // e / 2
+            fx_avg #(.W(W)) u_hx (.a(ex), .b({W{1'b0}}), .y(hx));
+            fx_avg #(.W(W)) u_hy (.a(ey), .b({W{1'b0}}), .y(hy));
+            wire         both_free = !a_pin && !b_pin;
+            wire [W-1:0] da_x = both_free ? hx : ex, da_y = both_free ? hy : ey;  // what a and b move by
+            /* verilator lint_off PINCONNECTEMPTY */
+            // saturation flags are not needed: the saturated value is the result
+            fx_add #(.W(W)) u_ax (.sub(1'b0), .a(ax), .b(da_x), .y(sum_ax), .sat());
+            fx_add #(.W(W)) u_ay (.sub(1'b0), .a(ay), .b(da_y), .y(sum_ay), .sat());
+            fx_add #(.W(W)) u_bx (.sub(1'b1), .a(bx), .b(da_x), .y(dif_bx), .sat());
+            fx_add #(.W(W)) u_by (.sub(1'b1), .a(by), .b(da_y), .y(dif_by), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+            wire unused_force = &{1'b0, ks, kd, apx, apy, aax, aay, bax, bay};
+        end
+    endgenerate
 
     // ---- storage access ----
     always @* begin
@@ -202,19 +243,25 @@ module pair_sequencer #(
                 ax    <= rd_x;
                 ay    <= rd_y;
                 a_pin <= rd_pinned;
+                apx   <= rd_px;
+                apy   <= rd_py;
+                aax   <= rd_accx;
+                aay   <= rd_accy;
             end
             S_GO: begin
                 bx    <= rd_x;
                 by    <= rd_y;
                 b_pin <= rd_pinned;
+                bax   <= rd_accx;
+                bay   <= rd_accy;
             end
             S_WAIT: if (t_done) begin
                 nax <= sum_ax;
                 nay <= sum_ay;
                 nbx <= dif_bx;
                 nby <= dif_by;
-                wa  <= t_valid && !a_pin;
-                wb  <= t_valid && !b_pin;
+                wa  <= t_valid && (SPRING || !a_pin);
+                wb  <= t_valid && (SPRING || !b_pin);
             end
             default: ;
         endcase

@@ -7,7 +7,9 @@
  * strand_top - the reference-000 rope engine: M node units of K nodes and a
  * constraint sequencer (design.md section 4).
  *
- * A frame (on `step`, when idle): the mouse is sampled; then SUBSTEPS times: every
+ * A frame (on `step`, when idle): the mouse is sampled; then SUBSTEPS times: with
+ * EN_SPRINGS, a spring pass (pair_sequencer, SPRING) gathers every link's force on
+ * its ends (phase FORCE); every
  * unit runs its Verlet (+ mouse) pass over its K nodes at once, FV rising when all
  * are done; then the sequencer runs ITER constraint passes over the chain, centred
  * (chain_sequencer, over every node) or pairwise (pair_sequencer, over every link),
@@ -20,7 +22,7 @@
  * reset to 0. After reset: write the constants and pins, then CMD = 1 lays the
  * nodes out (phase INIT, N cycles), then pulse step once per frame.
  *
- * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN. Every phase takes a number of
+ * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE. Every phase takes a number of
  * cycles fixed by the parameters (docs/architecture.md gives the formula).
  */
 module strand_top #(
@@ -37,6 +39,7 @@ module strand_top #(
     parameter [0:0]   EN_MOUSE       = 1'b1,  // mouse impulse
     parameter [0:0]   EN_CONSTRAINTS = 1'b1,  // distance constraints between neighbours
     parameter integer RULE           = 0,     // their rule: 0 centred (reference 000), 1 pairwise (002)
+    parameter [0:0]   EN_SPRINGS     = 1'b0,  // damped springs on the links (references 001, 004)
     // derived widths (leave at their defaults)
     parameter integer UW             = M > 1 ? $clog2(M) : 1,         // unit index
     parameter integer IW             = K > 1 ? $clog2(K) : 1,         // node index within a unit
@@ -61,12 +64,12 @@ module strand_top #(
     output wire [W-1:0]    rd_x,        // its position the next cycle
     output wire [W-1:0]    rd_y,
 
-    output reg  [1:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain
+    output reg  [2:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain, 4 force
     output wire            fv,          // every unit finished its Verlet pass
     output wire            fec,         // the constraint pass finished (counter = M x K)
-    output wire [UW-1:0]   uidx,        // the sequencer's C: unit
+    output wire [UW-1:0]   uidx,        // the sequencer's C (pairwise and springs: a): unit
     output wire [IW-1:0]   nidx,        //                    node
-    output wire [CW-1:0]   counter,     // nodes finished in this pass
+    output wire [CW-1:0]   counter,     // nodes (links) finished in this pass; phase FORCE: the spring pass's
 
     output wire [M-1:0]    wb_valid,    // per unit: a node of this unit was written
     output wire [M*IW-1:0] wb_idx,      //   its index in the unit
@@ -137,7 +140,7 @@ module strand_top #(
         end
     end
 
-    localparam [1:0] PH_IDLE = 2'd0, PH_INIT = 2'd1, PH_VERLET = 2'd2, PH_CONSTRAIN = 2'd3;
+    localparam [2:0] PH_IDLE = 3'd0, PH_INIT = 3'd1, PH_VERLET = 3'd2, PH_CONSTRAIN = 3'd3, PH_FORCE = 3'd4;
 
     localparam integer K_LAST_I = K - 1;
     localparam integer N_LAST_I = N - 1;
@@ -149,7 +152,7 @@ module strand_top #(
 
     // ---- run-time registers ----
     reg [W-1:0] gdt2_x, gdt2_y, rest_len, impulse, box_x, box_y, damping;
-    reg [W-1:0] start_x, start_y, step_x, step_y;
+    reg [W-1:0] start_x, start_y, step_x, step_y, ks, kd;
 
     wire cmd_init = cfg_we && cfg_addr == `STRAND_REG_CMD && cfg_data[0];
     wire pin_we   = cfg_we && cfg_addr == `STRAND_REG_PIN;
@@ -159,6 +162,7 @@ module strand_top #(
             gdt2_x <= {W{1'b0}}; gdt2_y <= {W{1'b0}}; rest_len <= {W{1'b0}}; impulse <= {W{1'b0}};
             box_x <= {W{1'b0}}; box_y <= {W{1'b0}}; damping <= {W{1'b0}};
             start_x <= {W{1'b0}}; start_y <= {W{1'b0}}; step_x <= {W{1'b0}}; step_y <= {W{1'b0}};
+            ks <= {W{1'b0}}; kd <= {W{1'b0}};
         end else if (cfg_we) begin
             case (cfg_addr)
                 `STRAND_REG_GDT2_X:  gdt2_x   <= cfg_data;
@@ -172,6 +176,8 @@ module strand_top #(
                 `STRAND_REG_START_Y: start_y  <= cfg_data;
                 `STRAND_REG_STEP_X:  step_x   <= cfg_data;
                 `STRAND_REG_STEP_Y:  step_y   <= cfg_data;
+                `STRAND_REG_KS:      ks       <= cfg_data;
+                `STRAND_REG_KD:      kd       <= cfg_data;
                 default: ;
             endcase
         end
@@ -186,13 +192,16 @@ module strand_top #(
     reg  [CW-1:0] init_count;
     reg  [W-1:0]  init_x, init_y;
     wire [W-1:0]  init_x_next, init_y_next;
-    wire          seq_done;
+    wire          seq_done, force_done;
     wire          fec_seq;
 
+    // A substep: [FORCE] VERLET [CONSTRAIN]; each phase starts in the cycle the one before ends.
     wire frame_start   = phase == PH_IDLE && !cmd_init && step;
     wire verlet_end    = phase == PH_VERLET && fv;
     wire substep_end   = (verlet_end && !EN_CONSTRAINTS) || (phase == PH_CONSTRAIN && seq_done);
-    wire verlet_start  = frame_start || (substep_end && substep_q != SUB_LAST);
+    wire substep_start = frame_start || (substep_end && substep_q != SUB_LAST);
+    wire force_start   = substep_start && EN_SPRINGS;
+    wire verlet_start  = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
     wire seq_start     = verlet_end && EN_CONSTRAINTS;
     wire init_last     = init_count == N_LAST;
 
@@ -227,7 +236,7 @@ module strand_top #(
                         init_x     <= start_x;
                         init_y     <= start_y;
                     end else if (step) begin
-                        phase        <= PH_VERLET;
+                        phase        <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
                         substep_q    <= {SW{1'b0}};
                         mouse_x_q    <= mouse_x;
                         mouse_y_q    <= mouse_y;
@@ -246,6 +255,7 @@ module strand_top #(
                     end
                     if (init_last) phase <= PH_IDLE;
                 end
+                PH_FORCE:     if (force_done) phase <= PH_VERLET;
                 PH_VERLET:    if (seq_start) phase <= PH_CONSTRAIN;
                 default:      ;
             endcase
@@ -254,60 +264,109 @@ module strand_top #(
                     phase      <= PH_IDLE;
                     frame_done <= 1'b1;
                 end else begin
-                    phase     <= PH_VERLET;
+                    phase     <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
                     substep_q <= substep_q + 1'b1;
                 end
             end
         end
     end
 
-    // ---- the sequencer ----
-    wire [UW-1:0] seq_rd_u, seq_wr_u;
-    wire [IW-1:0] seq_rd_n, seq_wr_n;
-    wire          seq_wr_en;
-    wire [W-1:0]  seq_wr_x, seq_wr_y;
-    wire [M*W-1:0] a_x_all, a_y_all;
+    // ---- the sequencers ----
+    // The constraint sequencer (c_*) and the spring pass (f_*) share port A of the
+    // units and their write port; they never run at once.
+    wire [UW-1:0] c_rd_u, c_wr_u, c_uidx;
+    wire [IW-1:0] c_rd_n, c_wr_n, c_nidx;
+    wire [CW-1:0] c_counter;
+    wire          c_wr_en;
+    wire [W-1:0]  c_wr_x, c_wr_y;
+    wire [UW-1:0] f_rd_u, f_wr_u, f_uidx;
+    wire [IW-1:0] f_rd_n, f_wr_n, f_nidx;
+    wire [CW-1:0] f_counter;
+    wire          f_wr_en;
+    wire [W-1:0]  f_wr_x, f_wr_y;
+    wire          in_force = phase == PH_FORCE;
+    wire [UW-1:0] seq_rd_u = in_force ? f_rd_u : c_rd_u;
+    wire [IW-1:0] seq_rd_n = in_force ? f_rd_n : c_rd_n;
+    assign uidx    = in_force ? f_uidx : c_uidx;
+    assign nidx    = in_force ? f_nidx : c_nidx;
+    assign counter = in_force ? f_counter : c_counter;
+
+    wire [M*W-1:0] a_x_all, a_y_all, a_px_all, a_py_all, a_accx_all, a_accy_all;
     wire [M-1:0]  a_pin_all, done_all;
     reg  [UW-1:0] rd_sel_q;  // unit whose port-A data the sequencer sees
     // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
-    wire          sel_ok   = {1'b0, rd_sel_q} < M_COUNT;
-    wire [W-1:0]  seq_rd_x = sel_ok ? a_x_all[rd_sel_q * W +: W] : {W{1'b0}};
-    wire [W-1:0]  seq_rd_y = sel_ok ? a_y_all[rd_sel_q * W +: W] : {W{1'b0}};
-    wire          seq_rd_pin = sel_ok && a_pin_all[rd_sel_q];
+    wire          sel_ok      = {1'b0, rd_sel_q} < M_COUNT;
+    wire [W-1:0]  seq_rd_x    = sel_ok ? a_x_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_y    = sel_ok ? a_y_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_px   = sel_ok ? a_px_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_py   = sel_ok ? a_py_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_accx = sel_ok ? a_accx_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_accy = sel_ok ? a_accy_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire          seq_rd_pin  = sel_ok && a_pin_all[rd_sel_q];
 
     always @(posedge clk) rd_sel_q <= seq_rd_u;
+    wire unused_rd = &{1'b0, seq_rd_x, seq_rd_y, seq_rd_pin};  // a build with neither pass reads nothing
 
+    /* verilator lint_off PINCONNECTEMPTY */
+    // the pairwise pass's px/py/force inputs and the constants it does not use
     generate
         if (EN_CONSTRAINTS && RULE == 0) begin : g_constraints
             chain_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
                               .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
-                .rd_uidx(seq_rd_u), .rd_nidx(seq_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
-                .wr_en(seq_wr_en), .wr_uidx(seq_wr_u), .wr_nidx(seq_wr_n), .wr_x(seq_wr_x), .wr_y(seq_wr_y),
-                .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec_seq));
+                .rd_uidx(c_rd_u), .rd_nidx(c_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
+                .wr_en(c_wr_en), .wr_uidx(c_wr_u), .wr_nidx(c_wr_n), .wr_x(c_wr_x), .wr_y(c_wr_y),
+                .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec_seq));
         end else if (EN_CONSTRAINTS) begin : g_pairwise
             pair_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
-                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_seq (
+                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .SPRING(1'b0)) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
-                .rd_uidx(seq_rd_u), .rd_nidx(seq_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
-                .wr_en(seq_wr_en), .wr_uidx(seq_wr_u), .wr_nidx(seq_wr_n), .wr_x(seq_wr_x), .wr_y(seq_wr_y),
-                .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec_seq));
+                .ks({W{1'b0}}), .kd({W{1'b0}}),
+                .rd_uidx(c_rd_u), .rd_nidx(c_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
+                .rd_px({W{1'b0}}), .rd_py({W{1'b0}}), .rd_accx({W{1'b0}}), .rd_accy({W{1'b0}}),
+                .wr_en(c_wr_en), .wr_uidx(c_wr_u), .wr_nidx(c_wr_n), .wr_x(c_wr_x), .wr_y(c_wr_y),
+                .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec_seq));
         end else begin : g_no_constraints
             assign seq_done = 1'b0;
-            assign seq_rd_u = {UW{1'b0}};
-            assign seq_rd_n = {IW{1'b0}};
-            assign seq_wr_en = 1'b0;
-            assign seq_wr_u = {UW{1'b0}};
-            assign seq_wr_n = {IW{1'b0}};
-            assign seq_wr_x = {W{1'b0}};
-            assign seq_wr_y = {W{1'b0}};
-            assign uidx = {UW{1'b0}};
-            assign nidx = {IW{1'b0}};
-            assign counter = {CW{1'b0}};
+            assign c_rd_u = {UW{1'b0}};
+            assign c_rd_n = {IW{1'b0}};
+            assign c_wr_en = 1'b0;
+            assign c_wr_u = {UW{1'b0}};
+            assign c_wr_n = {IW{1'b0}};
+            assign c_wr_x = {W{1'b0}};
+            assign c_wr_y = {W{1'b0}};
+            assign c_uidx = {UW{1'b0}};
+            assign c_nidx = {IW{1'b0}};
+            assign c_counter = {CW{1'b0}};
             assign fec_seq = 1'b0;
-            wire unused_seq = &{1'b0, seq_rd_x, seq_rd_y, seq_rd_pin, rest_len};
+            wire unused_seq = &{1'b0, rest_len};
+        end
+
+        if (EN_SPRINGS) begin : g_springs
+            pair_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(1),
+                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .SPRING(1'b1)) u_force (
+                .clk(clk), .reset(reset), .start(force_start), .done(force_done), .rest_len(rest_len),
+                .ks(ks), .kd(kd),
+                .rd_uidx(f_rd_u), .rd_nidx(f_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
+                .rd_px(seq_rd_px), .rd_py(seq_rd_py), .rd_accx(seq_rd_accx), .rd_accy(seq_rd_accy),
+                .wr_en(f_wr_en), .wr_uidx(f_wr_u), .wr_nidx(f_wr_n), .wr_x(f_wr_x), .wr_y(f_wr_y),
+                .uidx(f_uidx), .nidx(f_nidx), .counter(f_counter), .fec());
+        end else begin : g_no_springs
+            assign force_done = 1'b0;
+            assign f_rd_u = {UW{1'b0}};
+            assign f_rd_n = {IW{1'b0}};
+            assign f_wr_en = 1'b0;
+            assign f_wr_u = {UW{1'b0}};
+            assign f_wr_n = {IW{1'b0}};
+            assign f_wr_x = {W{1'b0}};
+            assign f_wr_y = {W{1'b0}};
+            assign f_uidx = {UW{1'b0}};
+            assign f_nidx = {IW{1'b0}};
+            assign f_counter = {CW{1'b0}};
+            wire unused_springs = &{1'b0, ks, kd, force_start, seq_rd_px, seq_rd_py, seq_rd_accx, seq_rd_accy};
         end
     endgenerate
+    /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- the units ----
     wire [UW-1:0] rd_u = rd_addr[UW+IW-1:IW];
@@ -327,16 +386,20 @@ module strand_top #(
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
             wire init_we = phase == PH_INIT && init_u == U_ID;
-            wire seq_we  = seq_wr_en && seq_wr_u == U_ID;
+            wire seq_we  = c_wr_en && c_wr_u == U_ID;
+            wire acc_we  = f_wr_en && f_wr_u == U_ID;
             node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
-                        .EN_MOUSE(EN_MOUSE), .UNIT_ID(u)) u_unit (
+                        .EN_MOUSE(EN_MOUSE), .EN_SPRINGS(EN_SPRINGS), .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .verlet_done(done_all[u]),
                 .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .damping(damping), .impulse(impulse),
                 .box_x(box_x), .box_y(box_y), .mouse_x(mouse_x_q), .mouse_y(mouse_y_q), .mouse_down(mouse_down_q),
                 .a_idx(seq_rd_n), .a_x(a_x_all[u*W +: W]), .a_y(a_y_all[u*W +: W]), .a_pinned(a_pin_all[u]),
-                .w_en(init_we || seq_we), .w_idx(init_we ? init_n : seq_wr_n),
-                .w_x(init_we ? init_x : seq_wr_x), .w_y(init_we ? init_y : seq_wr_y), .w_at_rest(init_we),
+                .a_px(a_px_all[u*W +: W]), .a_py(a_py_all[u*W +: W]),
+                .a_accx(a_accx_all[u*W +: W]), .a_accy(a_accy_all[u*W +: W]),
+                .acc_we(acc_we), .acc_wx(f_wr_x), .acc_wy(f_wr_y),
+                .w_en(init_we || seq_we), .w_idx(init_we ? init_n : acc_we ? f_wr_n : c_wr_n),
+                .w_x(init_we ? init_x : c_wr_x), .w_y(init_we ? init_y : c_wr_y), .w_at_rest(init_we),
                 .pin_en(pin_we && pin_u == U_ID), .pin_idx(pin_n),
                 .b_idx(rd_n), .b_x(b_x_all[u*W +: W]), .b_y(b_y_all[u*W +: W]),
                 .wb_valid(wb_valid[u]), .wb_idx(wb_idx[u*IW +: IW]), .wb_x(wb_x[u*W +: W]), .wb_y(wb_y[u*W +: W]));

@@ -23,6 +23,8 @@ REGS = [
     ("STEP_Y", 10, "initial offset from one node to the next, y (Q.F)"),
     ("PIN", 11, "write a node address {unit, node}: that node is pinned (reset unpins all)"),
     ("CMD", 12, "write 1: lay the nodes out from START and STEP, at rest (takes N cycles)"),
+    ("KS", 13, "spring stiffness, scaled: ks h^2 / m (Q.F)"),
+    ("KD", 14, "spring damping, scaled: kd h / m, or kd h^2 / m per step (Q.F)"),
 ]
 
 

@@ -11,7 +11,7 @@ frames=${2:-}
 build=${BUILD:-build}
 name=$(basename "$scene" .scene)
 dir=$build/hw/$name
-rtl="rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v"
+rtl="rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v rtl/spring_force.v rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v"
 rm -rf "$dir"
 if ! "$build/strand" hwgen "$scene" "$dir" ${frames:+--frames "$frames"}; then
   echo "FAIL top_frames $name: strand hwgen failed"; exit 1

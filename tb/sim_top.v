@@ -30,7 +30,7 @@ module sim_top #(
     input  wire [UW+IW-1:0] rd_addr,
     output wire [W-1:0]    rd_x,
     output wire [W-1:0]    rd_y,
-    output wire [1:0]      phase,
+    output wire [2:0]      phase,
     output wire            fv,
     output wire            fec,
     output wire [UW-1:0]   uidx,
@@ -44,7 +44,8 @@ module sim_top #(
     strand_top #(
         .W(W), .F(`STRAND_F), .M(M), .K(K), .SQRT_BITS(`STRAND_SQRT_BITS), .DIV_BITS(`STRAND_DIV_BITS),
         .ITER(`STRAND_ITER), .SUBSTEPS(`STRAND_SUBSTEPS), .EN_GRAVITY(`STRAND_EN_GRAVITY),
-        .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE)
+        .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE),
+        .EN_SPRINGS(`STRAND_EN_SPRINGS)
     ) u_top (
         .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_down(mouse_down),
         .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),

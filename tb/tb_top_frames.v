@@ -40,7 +40,7 @@ module tb_top_frames;
     reg [UW+IW-1:0] rd_addr = 0;
     wire [W-1:0] rd_x, rd_y;
     wire frame_done, fv, fec;
-    wire [1:0] phase;
+    wire [2:0] phase;
     wire [UW-1:0] uidx;
     wire [IW-1:0] nidx;
     wire [CW-1:0] counter;
@@ -51,7 +51,8 @@ module tb_top_frames;
     strand_top #(
         .W(`STRAND_W), .F(`STRAND_F), .M(M), .K(K), .SQRT_BITS(`STRAND_SQRT_BITS), .DIV_BITS(`STRAND_DIV_BITS),
         .ITER(`STRAND_ITER), .SUBSTEPS(`STRAND_SUBSTEPS), .EN_GRAVITY(`STRAND_EN_GRAVITY),
-        .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE)
+        .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE),
+        .EN_SPRINGS(`STRAND_EN_SPRINGS)
     ) dut (
         .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_down(mouse_down),
         .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
@@ -105,7 +106,7 @@ module tb_top_frames;
         end
         #1 cfg_we = 1'b0;
         cycles = 0;
-        while (phase != 2'd0 || cycles == 0) begin
+        while (phase != 3'd0 || cycles == 0) begin
             @(posedge clk);
             cycles = cycles + 1;
             if (cycles > N + 4) fail("the init walk did not end");

@@ -112,9 +112,19 @@ static void test_pairwise_scenes(void **state)
     check_scene(STRAND_ROOT "/sim/scenes/ref002_verlet.scene", 20);
 }
 
+/* Springs on chains: the spring pass's forces, gathered before the Verlet pass. */
+static void test_spring_scenes(void **state)
+{
+    (void)state;
+    check_scene(STRAND_ROOT "/sim/scenes/ref004_chain.scene", 60);
+    check_scene(STRAND_ROOT "/sim/scenes/ref002_verlet_springs.scene", 3);
+    check_scene(STRAND_ROOT "/sim/scenes/hard_stiff_k10000.scene", 30);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_spring_scenes),
         cmocka_unit_test(test_pairwise_scenes),
         cmocka_unit_test(test_ref000_rope),
         cmocka_unit_test(test_chain_q10_8),
