@@ -35,7 +35,8 @@ RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
              "-GM=16 -GK=16 -GITER=4 -GSUBSTEPS=3 -GSQRT_BITS=12 -GDIV_BITS=9" \
              "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8" "-GRULE=1 -GM=3 -GK=4 -GITER=2" \
-             "-GEN_SPRINGS=1'b1 -GRULE=1 -GSUBSTEPS=2" "-GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8 -GM=1"
+             "-GEN_SPRINGS=1'b1 -GRULE=1 -GSUBSTEPS=2" "-GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8 -GM=1" \
+             "-GEN_GROUND=1'b1 -GGROUND_AXIS=0 -GGROUND_ABOVE=1'b0 -GEN_CONSTRAINTS=1'b0" "-GEN_GROUND=1'b1 -GEN_SPRINGS=1'b1 -GRULE=1"
 
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
@@ -63,6 +64,7 @@ help:
 	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model"
 	@echo "  make stability   regenerate docs/stability.md and docs/img/stability_euler_verlet.png"
 	@echo "  make synth       Yosys (generic, iCE40 + nextpnr, ECP5, Xilinx) for the 4x5, 8x8, 16x16 builds -> docs/resources.md"
+	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"
 	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
 	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
@@ -129,10 +131,10 @@ bench: bootstrap
 LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_rope.scene:120 sim/scenes/ref002_verlet.scene:40 \
                    sim/scenes/hard_collapse.scene sim/scenes/hard_saturate.scene:300 sim/scenes/hard_narrow_q10_8.scene:200 \
                    sim/scenes/hard_mouse_impulse.scene:40 sim/scenes/ref004_chain.scene:60 sim/scenes/hard_stiff_k10000.scene:40 \
-                   sim/scenes/ref002_verlet_springs.scene:2
+                   sim/scenes/ref002_verlet_springs.scene:2 sim/scenes/hard_ground_impact.scene:300
 # Every hard case the RTL supports (issue F), in lockstep: make lockstep-hard (longer; not in make test).
 HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 hard_many_iterations:10 \
-            hard_stiff_k1000:200 hard_stiff_k10000:200 \
+            hard_stiff_k1000:200 hard_stiff_k10000:200 hard_ground_impact \
             hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
 
 # make test: the RTL and reference scenes, the planted faults, random initial values, 50 random scenes
@@ -191,7 +193,7 @@ lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 # ---- everything ----
 
 TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep \
-              test-stability test-fuzz test-accuracy test-synth-check
+              test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap
 	@scripts/run_tests.sh $(TEST_STEPS)
@@ -203,3 +205,4 @@ clean:
 include scripts/stability.mk
 include scripts/accuracy.mk
 include tb/synth.mk
+include scripts/effects.mk

@@ -50,6 +50,9 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->en_constraints = hp->en_constraints;
     sc->rule = hp->rule ? RULE_PAIRWISE : RULE_CENTRED;
     sc->en_springs = hp->en_springs;
+    sc->en_ground = hp->en_ground;
+    sc->ground_axis = hp->ground_axis;
+    sc->ground_sign = hp->ground_above ? 1 : -1;
     /* The links the pair sequencers walk, as the scene reader lays a chain's edges out:
        rods (walked by the pairwise rule), then springs; every rest length comes from DIST. */
     if (n > 1 && (hp->en_constraints || hp->en_springs)) {
@@ -126,7 +129,9 @@ static void reset_all(cyc_model *c)
     c->s.dist = c->s.impulse = c->s.damping = 0;
     for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
     for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
-    c->s.ks = c->s.kd = 0;
+    c->s.ks = c->s.kd = c->s.ground = c->s.friction = 0;
+    c->prev_off[0] = c->prev_off[1] = 0;
+    c->ground_pass = false;
     memset(&c->pair, 0, sizeof c->pair);   /* PQ_IDLE, counters 0 */
     memset(&c->force, 0, sizeof c->force);
     c->s.mouse_down = false;
@@ -267,7 +272,9 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool verlet_end = c->phase == PH_VERLET && c->done;
     const bool seq_done = hp->rule ? c->pair.done : c->sq_done;
     const bool force_done = c->force.done;
-    const bool substep_end = (verlet_end && !hp->en_constraints) || (c->phase == PH_CONSTRAIN && seq_done);
+    const bool body_end = hp->en_constraints ? c->phase == PH_CONSTRAIN && seq_done : verlet_end;
+    const bool ground_start = body_end && hp->en_ground;
+    const bool substep_end = hp->en_ground ? c->phase == PH_GROUND && c->done : body_end;
     const bool last_substep = c->substep == hp->substeps - 1;
     const bool substep_start = frame_start || (substep_end && !last_substep);
     const bool force_start = substep_start && hp->en_springs;
@@ -284,11 +291,20 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     /* Storage writes. The init walk (strand_top PH_INIT): node (init_u, init_n) at rest. */
     if (c->phase == PH_INIT) {
         int node = c->init_u * k + c->init_n;
-        for (int a = 0; a < 2; a++) c->s.pos[node][a] = c->s.prev[node][a] = c->init_pos[a];
+        for (int a = 0; a < 2; a++) {
+            c->s.pos[node][a] = c->init_pos[a];
+            /* node_unit: a pinned node starts at rest, a free one PREV away */
+            c->s.prev[node][a] = c->sc.pinned[node] ? c->init_pos[a] : fx_add(f, c->init_pos[a], c->prev_off[a]);
+        }
         lane_write(c, written, c->init_u, c->init_n, node);
     }
     /* The Verlet pass (node_unit, running): node vidx of every unit. */
-    if (c->running && !verlet_start) {
+    if (c->running && !verlet_start && c->ground_pass) {
+        for (int u = 0; u < m; u++) {
+            int node = u * k + c->vidx;
+            if (sim_fx_ground_node(&c->s, node)) lane_write(c, written, u, c->vidx, node);
+        }
+    } else if (c->running && !verlet_start) {
         for (int u = 0; u < m; u++) {
             int node = u * k + c->vidx;
             c->s.mouse[0] = c->mouse_q[0];
@@ -365,10 +381,11 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     }
 
     /* node_unit pass FSM. */
-    if (verlet_start) {
+    if (verlet_start || ground_start) {
         c->running = true;
         c->done = false;
         c->vidx = 0;
+        c->ground_pass = !verlet_start;
     } else if (c->running) {
         if (c->vidx == k - 1) {
             c->running = false;
@@ -413,6 +430,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         break;
     default: break;
     }
+    if (ground_start) c->phase = PH_GROUND;
     if (substep_end) {
         if (last_substep) {
             c->phase = PH_IDLE;
@@ -439,6 +457,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         case STRAND_REG_DAMPING: c->s.damping = v; break;
         case STRAND_REG_KS: c->s.ks = v; break;
         case STRAND_REG_KD: c->s.kd = v; break;
+        case STRAND_REG_GROUND: c->s.ground = v; break;
+        case STRAND_REG_FRICTION: c->s.friction = v; break;
+        case STRAND_REG_PREV_X: c->prev_off[0] = v; break;
+        case STRAND_REG_PREV_Y: c->prev_off[1] = v; break;
         case STRAND_REG_START_X: c->start[0] = v; break;
         case STRAND_REG_START_Y: c->start[1] = v; break;
         case STRAND_REG_STEP_X: c->step[0] = v; break;

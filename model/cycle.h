@@ -25,7 +25,7 @@ extern "C" {
 
 #define CYC_MAX_UNITS 256
 
-enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4 };
+enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4, PH_GROUND = 5 };
 enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
 enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };                 /* pair_sequencer */
 
@@ -76,10 +76,11 @@ typedef struct {
     fx_t mouse_q[2];
     bool mouse_down_q;
     int init_u, init_n, init_count;
-    fx_t init_pos[2], start[2], step[2];
+    fx_t init_pos[2], start[2], step[2], prev_off[2];
     uint32_t rd_u_q;
     /* node units (they run in step) */
     bool running, done;
+    bool ground_pass; /* the pass under way is the ground pass */
     int vidx;
     fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS];
     bool wb_valid[CYC_MAX_UNITS];

@@ -268,17 +268,18 @@ void P(pair_edge)(SIM *s, int e)
  * along the normal is reversed (x- = boundary + v); friction pulls the other axes'
  * previous positions toward the current ones by (1 - u).
  */
-void P(ground_node)(SIM *s, int i)
+bool P(ground_node)(SIM *s, int i)
 {
     const scene *sc = s->sc;
     int ax = sc->ground_axis;
     NUM z = s->pos[i][ax];
     bool below = sc->ground_sign > 0 ? LESS(z, s->ground) : LESS(s->ground, z);
-    if (P(node_fixed)(s, i) || !below) return;
+    if (P(node_fixed)(s, i) || !below) return false;
     s->prev[i][ax] = ADD(s->ground, SUB(z, s->prev[i][ax]));
     s->pos[i][ax] = s->ground;
     for (int k = 0; k < s->dim; k++)
         if (k != ax) s->prev[i][k] = ADD(s->prev[i][k], MUL(SUB(s->pos[i][k], s->prev[i][k]), s->friction));
+    return true;
 }
 
 static void P(force_pass)(SIM *s)

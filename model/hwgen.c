@@ -28,12 +28,21 @@ const char *hw_check(const scene *sc, char *err, size_t len)
     if (sc->body != BODY_CHAIN) return reject(sc, "graph", err, len, "graph bodies (they need the edge sequencer)");
     if (sc->dim != 2) return reject(sc, "scene", err, len, "3D scenes");
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
-    if (sc->en_ground) return reject(sc, "ground", err, len, "ground collision");
     if (sc->en_mouse && sc->mouse != MOUSE_IMPULSE) return reject(sc, "mouse", err, len, "the grab form of the mouse");
-    for (int i = 0; i < sc->n_nodes; i++)
-        for (int k = 0; k < 3; k++)
-            if (sc->prev[i][k] != sc->pos[i][k])
-                return reject(sc, "chain", err, len, "chains that start moving (the init walk lays nodes out at rest)");
+    /* The init walk gives every free node the same previous-position offset (PREV_X/Y),
+       and a pinned one none: the frame engine's offsets, in the scene's format, must agree. */
+    for (int k = 0; k < 2; k++) {
+        fx_t off = 0;
+        bool seen = false;
+        for (int i = 0; i < sc->n_nodes; i++) {
+            fx_t o = fx_from_double(&sc->fmt, sc->prev[i][k] - sc->pos[i][k]);
+            if (sc->pinned[i]) continue;
+            if (seen && o != off)
+                return reject(sc, "chain", err, len, "chains whose free nodes start with different velocities");
+            off = o;
+            seen = true;
+        }
+    }
     return NULL;
 }
 
@@ -54,6 +63,9 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->en_constraints = sc->en_constraints;
     hp->rule = sc->rule == RULE_PAIRWISE ? 1 : 0;
     hp->en_springs = sc->en_springs;
+    hp->en_ground = sc->en_ground;
+    hp->ground_axis = sc->en_ground ? sc->ground_axis : 1;
+    hp->ground_above = !sc->en_ground || sc->ground_sign > 0;
     hp->uw = hp->m > 1 ? clog2(hp->m) : 1;
     hp->iw = hp->k > 1 ? clog2(hp->k) : 1;
     hp->cw = clog2((long)hp->m * hp->k + 1);
@@ -78,6 +90,7 @@ long hw_cycles_per_frame(const hw_params *hp)
     long spring = hp->sqrt_bits + 2 * hp->div_bits + 15;         /* spring_force.v: start cycle to done cycle */
     long substep = hp->en_constraints ? hp->k + 2 + hp->iter * pass : hp->k + 1;
     if (hp->en_springs) substep += 1 + (n - 1) * (spring + 5); /* the spring pass: every link, as pairwise */
+    if (hp->en_ground) substep += hp->k + 1;                    /* the ground pass: every node of a unit */
     return hp->substeps * substep + 1;
 }
 
@@ -101,6 +114,14 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
     PUT(STRAND_REG_DAMPING, s->damping);
     PUT(STRAND_REG_KS, s->ks);
     PUT(STRAND_REG_KD, s->kd);
+    PUT(STRAND_REG_GROUND, s->ground);
+    PUT(STRAND_REG_FRICTION, s->friction);
+    for (int i = 0; i < sc->n_nodes; i++) /* the free nodes' offset (hw_check: they share it) */
+        if (!sc->pinned[i]) {
+            PUT(STRAND_REG_PREV_X, fx_from_double(f, sc->prev[i][0] - sc->pos[i][0]));
+            PUT(STRAND_REG_PREV_Y, fx_from_double(f, sc->prev[i][1] - sc->pos[i][1]));
+            break;
+        }
     PUT(STRAND_REG_START_X, fx_from_double(f, sc->chain_start[0]));
     PUT(STRAND_REG_START_Y, fx_from_double(f, sc->chain_start[1]));
     PUT(STRAND_REG_STEP_X, fx_from_double(f, sc->chain_step[0]));
@@ -172,6 +193,8 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.en_damping, hp.en_mouse);
         fprintf(f, "`define STRAND_EN_CONSTRAINTS 1'b%d\n`define STRAND_RULE %d\n`define STRAND_EN_SPRINGS 1'b%d\n", hp.en_constraints,
                 hp.rule, hp.en_springs);
+        fprintf(f, "`define STRAND_EN_GROUND 1'b%d\n`define STRAND_GROUND_AXIS %d\n`define STRAND_GROUND_ABOVE 1'b%d\n", hp.en_ground,
+                hp.ground_axis, hp.ground_above);
         fprintf(f, "`define STRAND_FRAMES %d\n`define STRAND_NCONFIG %d\n`define STRAND_CYCLES_PER_FRAME %ld\n", frames, nw,
                 hw_cycles_per_frame(&hp));
         ok = fclose(f) == 0;
@@ -184,6 +207,8 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
         fprintf(f, "#define STRAND_EN_GRAVITY %d\n#define STRAND_EN_DAMPING %d\n#define STRAND_EN_MOUSE %d\n#define STRAND_EN_CONSTRAINTS %d\n",
                 hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints);
         fprintf(f, "#define STRAND_RULE %d\n#define STRAND_EN_SPRINGS %d\n", hp.rule, hp.en_springs);
+        fprintf(f, "#define STRAND_EN_GROUND %d\n#define STRAND_GROUND_AXIS %d\n#define STRAND_GROUND_ABOVE %d\n", hp.en_ground,
+                hp.ground_axis, hp.ground_above);
         ok = fclose(f) == 0;
     } else ok = false;
     if (ok && (f = open_in(dir, "config.hex", err, len))) {

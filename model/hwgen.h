@@ -18,7 +18,9 @@ extern "C" {
 /* The RTL build a scene needs. */
 typedef struct {
     int w, f, m, k, sqrt_bits, div_bits, iter, substeps;
-    bool en_gravity, en_damping, en_mouse, en_constraints, en_springs;
+    bool en_gravity, en_damping, en_mouse, en_constraints, en_springs, en_ground;
+    int ground_axis;   /* 0 x, 1 y */
+    bool ground_above; /* nodes stay at or above the boundary (the scene's normal is +axis) */
     int rule; /* 0 centred (chain_sequencer), 1 pairwise (pair_sequencer) */
     int uw, iw, cw; /* derived widths, as strand_top computes them */
 } hw_params;

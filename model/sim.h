@@ -62,7 +62,7 @@ typedef struct sim_dbl {
     void P##mouse_node(SIM *s, int i);   /* mouse impulse on one node, after its Verlet step */         \
     bool P##centred_node(SIM *s, int i); /* centred chain constraint on node i; true if it was written */ \
     void P##pair_edge(SIM *s, int e);    /* pairwise constraint on one rod or strut */                  \
-    void P##ground_node(SIM *s, int i);  /* ground collision with friction */                           \
+    bool P##ground_node(SIM *s, int i);  /* ground collision with friction; true if the node was written */                           \
     void P##substep(SIM *s);                                                                             \
     bool P##node_fixed(const SIM *s, int i); /* pinned or grabbed: constraints do not move it */
 

@@ -11,6 +11,11 @@
  *     x = x + acc (EN_SPRINGS: the spring force of this substep, then acc = 0)
  *     mouse (EN_MOUSE, button down, |mouse - x| < box on both axes):
  *         px.x = (mouse.x < px.x) ? x.x + a : x.x - a
+ * A ground pass (EN_GROUND, started by ground_start) walks the nodes the same way
+ * with model/engine_body.h ground_node(): a node past the boundary b on the normal
+ * axis n is put on it, its velocity along n reversed and, on the other axis o, its
+ * previous position pulled toward its position by the friction factor (1 - u):
+ *     pz = b + (z - pz);  z = b;  po = po + (o - po) * friction
  * Every operation is a saturating fx_add/fx_mul, in the model's order. Pinned
  * nodes are not written.
  *
@@ -33,6 +38,9 @@ module node_unit #(
     parameter [0:0]  EN_DAMPING = 1'b0,  // Verlet damping v -= v * d (two multipliers)
     parameter [0:0]  EN_MOUSE = 1'b1,  // reference-000 mouse impulse
     parameter [0:0]  EN_SPRINGS = 1'b0,  // per-node spring force: storage, added in the Verlet step
+    parameter [0:0]  EN_GROUND  = 1'b0,  // the ground pass (reference 001): collision with friction
+    parameter integer GROUND_AXIS = 1,   // the ground's normal axis: 0 x, 1 y
+    parameter [0:0]  GROUND_ABOVE = 1'b1, // 1: nodes stay at or above the boundary on that axis, 0: below
     /* verilator lint_off UNUSEDPARAM */
     // read only by the test-only planted fault (STRAND_FAULTS)
     parameter integer UNIT_ID  = 0      // this unit's number
@@ -41,8 +49,11 @@ module node_unit #(
     input  wire          clk,
     input  wire          reset,        // synchronous, active high: all nodes at 0, unpinned
 
-    input  wire          verlet_start, // one-cycle pulse: run the pass over all K nodes
+    input  wire          verlet_start, // one-cycle pulse: run the Verlet pass over all K nodes
+    input  wire          ground_start, // one-cycle pulse: run the ground pass (EN_GROUND)
     output wire          verlet_done,  // this unit's FV: high from the end of a pass to the next start
+    input  wire [W-1:0]  ground,       // the ground boundary on its axis
+    input  wire [W-1:0]  friction,     // 1 - u
 
     input  wire [W-1:0]  gdt2_x,       // g h^2, per axis
     input  wire [W-1:0]  gdt2_y,
@@ -70,7 +81,9 @@ module node_unit #(
     input  wire [IW-1:0] w_idx,
     input  wire [W-1:0]  w_x,
     input  wire [W-1:0]  w_y,
-    input  wire          w_at_rest,    // also set px, py = x, y (the init walk)
+    input  wire          w_at_rest,    // also set px, py: the init walk
+    input  wire [W-1:0]  w_px,         //   to these, or to w_x, w_y for a pinned node
+    input  wire [W-1:0]  w_py,
     input  wire          pin_en,       // pin node pin_idx
     input  wire [IW-1:0] pin_idx,
 
@@ -120,17 +133,21 @@ module node_unit #(
     reg          running_q, running_d;  // a pass is under way
     reg          done_q, done_d;        // FV
     reg [IW-1:0] vidx_q, vidx_d;        // node whose data port A returns this cycle
+    reg          ground_q, ground_d;    // the pass under way is the ground pass
 
     wire last = vidx_q == K_LAST;
+    wire pass_start = verlet_start || (EN_GROUND && ground_start);
 
     always @* begin
         running_d = running_q;
         done_d    = done_q;
         vidx_d    = vidx_q;
-        if (verlet_start) begin
+        ground_d  = ground_q;
+        if (pass_start) begin
             running_d = 1'b1;
             done_d    = 1'b0;
             vidx_d    = {IW{1'b0}};
+            ground_d  = !verlet_start;
         end else if (running_q) begin
             vidx_d = vidx_q + 1'b1;
             if (last) begin
@@ -145,10 +162,12 @@ module node_unit #(
             running_q <= 1'b0;
             done_q    <= 1'b0;
             vidx_q    <= {IW{1'b0}};
+            ground_q  <= 1'b0;
         end else begin
             running_q <= running_d;
             done_q    <= done_d;
             vidx_q    <= vidx_d;
+            ground_q  <= ground_d;
         end
     end
 
@@ -157,7 +176,7 @@ module node_unit #(
     // ---- port A: synchronous read ----
     // During a pass the address runs ahead of vidx by one: node vidx+1 is read
     // while node vidx is written.
-    wire [IW-1:0] a_addr = verlet_start ? {IW{1'b0}} : running_q ? vidx_q + 1'b1 : a_idx;
+    wire [IW-1:0] a_addr = pass_start ? {IW{1'b0}} : running_q ? vidx_q + 1'b1 : a_idx;
     reg  [W-1:0]  q_x, q_y, q_px, q_py;
     reg           q_pin;
 
@@ -232,7 +251,7 @@ module node_unit #(
                         ax_mem[j] <= {W{1'b0}};
                         ay_mem[j] <= {W{1'b0}};
                     end
-                end else if (running_q && {1'b0, vidx_q} < K_COUNT) begin
+                end else if (running_q && !ground_q && {1'b0, vidx_q} < K_COUNT) begin
                     ax_mem[vidx_q] <= {W{1'b0}};
                     ay_mem[vidx_q] <= {W{1'b0}};
                 end else if (acc_we && {1'b0, w_idx} < K_COUNT) begin
@@ -275,10 +294,37 @@ module node_unit #(
         end
     endgenerate
 
+    // ---- the ground pass: collision with friction ----
+    wire          g_hit;            // past the boundary
+    wire [W-1:0]  g_x, g_y, g_px, g_py;
+    generate
+        if (EN_GROUND) begin : g_ground
+            wire [W-1:0] z  = GROUND_AXIS == 0 ? q_x : q_y;
+            wire [W-1:0] vz = GROUND_AXIS == 0 ? vx : vy;   // z - pz
+            wire [W-1:0] vo = GROUND_AXIS == 0 ? vy : vx;   // o - po
+            wire [W-1:0] po = GROUND_AXIS == 0 ? q_py : q_px;
+            wire [W-1:0] npz, slip, npo;
+            assign g_hit = GROUND_ABOVE ? $signed(z) < $signed(ground) : $signed(ground) < $signed(z);
+            fx_add #(.W(W)) u_npz (.sub(1'b0), .a(ground), .b(vz), .y(npz), .sat());
+            fx_mul #(.W(W), .F(F)) u_slip (.a(vo), .b(friction), .y(slip), .sat(), .prod());
+            fx_add #(.W(W)) u_npo (.sub(1'b0), .a(po), .b(slip), .y(npo), .sat());
+            assign g_x  = GROUND_AXIS == 0 ? ground : q_x;
+            assign g_y  = GROUND_AXIS == 0 ? q_y : ground;
+            assign g_px = GROUND_AXIS == 0 ? npz : npo;
+            assign g_py = GROUND_AXIS == 0 ? npo : npz;
+        end else begin : g_no_ground
+            assign g_hit = 1'b0;
+            assign g_x = q_x;
+            assign g_y = q_y;
+            assign g_px = q_px;
+            assign g_py = q_py;
+            wire unused_ground = &{1'b0, ground, friction, ground_start};
+        end
+    endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- writes: the pass, else port A's writer; pins ----
-    wire          pass_we = running_q && !q_pin;
+    wire          pass_we = running_q && !q_pin && (!ground_q || g_hit);
     wire          we      = pass_we || w_en;
     wire [IW-1:0] widx    = running_q ? vidx_q : w_idx;
 `ifdef STRAND_FAULTS
@@ -291,13 +337,14 @@ module node_unit #(
         if (reset) fault_writes <= 3'd0;
         else if (pass_we && fault_writes != 3'd7) fault_writes <= fault_writes + 1'b1;
     wire fault_flip = fault_on && UNIT_ID == 0 && pass_we && fault_writes == 3'd4;
-    wire [W-1:0]  wx      = running_q ? nx ^ {{(W-1){1'b0}}, fault_flip} : w_x;
+    wire [W-1:0]  wx      = running_q ? (ground_q ? g_x : nx ^ {{(W-1){1'b0}}, fault_flip}) : w_x;
 `else
-    wire [W-1:0]  wx      = running_q ? nx : w_x;
+    wire [W-1:0]  wx      = running_q ? (ground_q ? g_x : nx) : w_x;
 `endif
-    wire [W-1:0]  wy      = running_q ? ny : w_y;
-    wire [W-1:0]  wpx     = running_q ? npx : w_x;
-    wire [W-1:0]  wpy     = running_q ? q_y : w_y;
+    wire [W-1:0]  wy      = running_q ? (ground_q ? g_y : ny) : w_y;
+    wire          w_pin   = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
+    wire [W-1:0]  wpx     = running_q ? (ground_q ? g_px : npx) : w_pin ? w_x : w_px;
+    wire [W-1:0]  wpy     = running_q ? (ground_q ? g_py : q_y) : w_pin ? w_y : w_py;
     wire          wprev   = running_q || w_at_rest;
 
     integer i;

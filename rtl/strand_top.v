@@ -22,7 +22,10 @@
  * reset to 0. After reset: write the constants and pins, then CMD = 1 lays the
  * nodes out (phase INIT, N cycles), then pulse step once per frame.
  *
- * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE. Every phase takes a number of
+ * With EN_GROUND, a ground pass ends each substep (phase GROUND; the units walk
+ * their nodes as in the Verlet pass, FV rising when all are done).
+ *
+ * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND. Every phase takes a number of
  * cycles fixed by the parameters (docs/architecture.md gives the formula).
  */
 module strand_top #(
@@ -40,6 +43,9 @@ module strand_top #(
     parameter [0:0]   EN_CONSTRAINTS = 1'b1,  // distance constraints between neighbours
     parameter integer RULE           = 0,     // their rule: 0 centred (reference 000), 1 pairwise (002)
     parameter [0:0]   EN_SPRINGS     = 1'b0,  // damped springs on the links (references 001, 004)
+    parameter [0:0]   EN_GROUND      = 1'b0,  // ground collision with friction (reference 001)
+    parameter integer GROUND_AXIS    = 1,     // its normal axis: 0 x, 1 y
+    parameter [0:0]   GROUND_ABOVE   = 1'b1,  // 1: nodes stay at or above the boundary, 0: at or below
     // derived widths (leave at their defaults)
     parameter integer UW             = M > 1 ? $clog2(M) : 1,         // unit index
     parameter integer IW             = K > 1 ? $clog2(K) : 1,         // node index within a unit
@@ -64,8 +70,8 @@ module strand_top #(
     output wire [W-1:0]    rd_x,        // its position the next cycle
     output wire [W-1:0]    rd_y,
 
-    output reg  [2:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain, 4 force
-    output wire            fv,          // every unit finished its Verlet pass
+    output reg  [2:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain, 4 force, 5 ground
+    output wire            fv,          // every unit finished its Verlet (or ground) pass
     output wire            fec,         // the constraint pass finished (counter = M x K)
     output wire [UW-1:0]   uidx,        // the sequencer's C (pairwise and springs: a): unit
     output wire [IW-1:0]   nidx,        //                    node
@@ -131,6 +137,13 @@ module strand_top #(
             $fatal(1, "strand_top: RULE must be 0 (centred) or 1 (pairwise) in %m");
 `endif
         end
+        if (GROUND_AXIS != 0 && GROUND_AXIS != 1) begin
+`ifdef SYNTHESIS
+            $error("strand_top: GROUND_AXIS must be 0 (x) or 1 (y) in %m");
+`else
+            $fatal(1, "strand_top: GROUND_AXIS must be 0 (x) or 1 (y) in %m");
+`endif
+        end
         if (UW + IW > W) begin
 `ifdef SYNTHESIS
             $error("strand_top: a {unit, node} address (%0d bits) must fit W=%0d in %m", UW + IW, W);
@@ -140,7 +153,8 @@ module strand_top #(
         end
     end
 
-    localparam [2:0] PH_IDLE = 3'd0, PH_INIT = 3'd1, PH_VERLET = 3'd2, PH_CONSTRAIN = 3'd3, PH_FORCE = 3'd4;
+    localparam [2:0] PH_IDLE = 3'd0, PH_INIT = 3'd1, PH_VERLET = 3'd2, PH_CONSTRAIN = 3'd3, PH_FORCE = 3'd4,
+                     PH_GROUND = 3'd5;
 
     localparam integer K_LAST_I = K - 1;
     localparam integer N_LAST_I = N - 1;
@@ -152,7 +166,7 @@ module strand_top #(
 
     // ---- run-time registers ----
     reg [W-1:0] gdt2_x, gdt2_y, rest_len, impulse, box_x, box_y, damping;
-    reg [W-1:0] start_x, start_y, step_x, step_y, ks, kd;
+    reg [W-1:0] start_x, start_y, step_x, step_y, ks, kd, ground, friction, prev_x, prev_y;
 
     wire cmd_init = cfg_we && cfg_addr == `STRAND_REG_CMD && cfg_data[0];
     wire pin_we   = cfg_we && cfg_addr == `STRAND_REG_PIN;
@@ -162,7 +176,8 @@ module strand_top #(
             gdt2_x <= {W{1'b0}}; gdt2_y <= {W{1'b0}}; rest_len <= {W{1'b0}}; impulse <= {W{1'b0}};
             box_x <= {W{1'b0}}; box_y <= {W{1'b0}}; damping <= {W{1'b0}};
             start_x <= {W{1'b0}}; start_y <= {W{1'b0}}; step_x <= {W{1'b0}}; step_y <= {W{1'b0}};
-            ks <= {W{1'b0}}; kd <= {W{1'b0}};
+            ks <= {W{1'b0}}; kd <= {W{1'b0}}; ground <= {W{1'b0}}; friction <= {W{1'b0}};
+            prev_x <= {W{1'b0}}; prev_y <= {W{1'b0}};
         end else if (cfg_we) begin
             case (cfg_addr)
                 `STRAND_REG_GDT2_X:  gdt2_x   <= cfg_data;
@@ -178,6 +193,10 @@ module strand_top #(
                 `STRAND_REG_STEP_Y:  step_y   <= cfg_data;
                 `STRAND_REG_KS:      ks       <= cfg_data;
                 `STRAND_REG_KD:      kd       <= cfg_data;
+                `STRAND_REG_GROUND:  ground   <= cfg_data;
+                `STRAND_REG_FRICTION: friction <= cfg_data;
+                `STRAND_REG_PREV_X:  prev_x   <= cfg_data;
+                `STRAND_REG_PREV_Y:  prev_y   <= cfg_data;
                 default: ;
             endcase
         end
@@ -191,14 +210,16 @@ module strand_top #(
     reg  [IW-1:0] init_n;
     reg  [CW-1:0] init_count;
     reg  [W-1:0]  init_x, init_y;
-    wire [W-1:0]  init_x_next, init_y_next;
+    wire [W-1:0]  init_x_next, init_y_next, init_px, init_py;
     wire          seq_done, force_done;
     wire          fec_seq;
 
-    // A substep: [FORCE] VERLET [CONSTRAIN]; each phase starts in the cycle the one before ends.
+    // A substep: [FORCE] VERLET [CONSTRAIN] [GROUND]; each phase starts in the cycle the one before ends.
     wire frame_start   = phase == PH_IDLE && !cmd_init && step;
     wire verlet_end    = phase == PH_VERLET && fv;
-    wire substep_end   = (verlet_end && !EN_CONSTRAINTS) || (phase == PH_CONSTRAIN && seq_done);
+    wire body_end      = EN_CONSTRAINTS ? phase == PH_CONSTRAIN && seq_done : verlet_end;
+    wire ground_start  = body_end && EN_GROUND;
+    wire substep_end   = EN_GROUND ? phase == PH_GROUND && fv : body_end;
     wire substep_start = frame_start || (substep_end && substep_q != SUB_LAST);
     wire force_start   = substep_start && EN_SPRINGS;
     wire verlet_start  = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
@@ -209,6 +230,8 @@ module strand_top #(
     // saturation flags are not needed: the saturated value is the result
     fx_add #(.W(W)) u_init_x (.sub(1'b0), .a(init_x), .b(step_x), .y(init_x_next), .sat());
     fx_add #(.W(W)) u_init_y (.sub(1'b0), .a(init_y), .b(step_y), .y(init_y_next), .sat());
+    fx_add #(.W(W)) u_init_px (.sub(1'b0), .a(init_x), .b(prev_x), .y(init_px), .sat());
+    fx_add #(.W(W)) u_init_py (.sub(1'b0), .a(init_y), .b(prev_y), .y(init_py), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     always @(posedge clk) begin
@@ -259,6 +282,7 @@ module strand_top #(
                 PH_VERLET:    if (seq_start) phase <= PH_CONSTRAIN;
                 default:      ;
             endcase
+            if (ground_start) phase <= PH_GROUND;
             if (substep_end) begin
                 if (substep_q == SUB_LAST) begin
                     phase      <= PH_IDLE;
@@ -389,9 +413,11 @@ module strand_top #(
             wire seq_we  = c_wr_en && c_wr_u == U_ID;
             wire acc_we  = f_wr_en && f_wr_u == U_ID;
             node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
-                        .EN_MOUSE(EN_MOUSE), .EN_SPRINGS(EN_SPRINGS), .UNIT_ID(u)) u_unit (
+                        .EN_MOUSE(EN_MOUSE), .EN_SPRINGS(EN_SPRINGS), .EN_GROUND(EN_GROUND),
+                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
-                .verlet_start(verlet_start), .verlet_done(done_all[u]),
+                .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
+                .ground(ground), .friction(friction),
                 .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .damping(damping), .impulse(impulse),
                 .box_x(box_x), .box_y(box_y), .mouse_x(mouse_x_q), .mouse_y(mouse_y_q), .mouse_down(mouse_down_q),
                 .a_idx(seq_rd_n), .a_x(a_x_all[u*W +: W]), .a_y(a_y_all[u*W +: W]), .a_pinned(a_pin_all[u]),
@@ -400,6 +426,7 @@ module strand_top #(
                 .acc_we(acc_we), .acc_wx(f_wr_x), .acc_wy(f_wr_y),
                 .w_en(init_we || seq_we), .w_idx(init_we ? init_n : acc_we ? f_wr_n : c_wr_n),
                 .w_x(init_we ? init_x : c_wr_x), .w_y(init_we ? init_y : c_wr_y), .w_at_rest(init_we),
+                .w_px(init_px), .w_py(init_py),
                 .pin_en(pin_we && pin_u == U_ID), .pin_idx(pin_n),
                 .b_idx(rd_n), .b_x(b_x_all[u*W +: W]), .b_y(b_y_all[u*W +: W]),
                 .wb_valid(wb_valid[u]), .wb_idx(wb_idx[u*IW +: IW]), .wb_x(wb_x[u*W +: W]), .wb_y(wb_y[u*W +: W]));

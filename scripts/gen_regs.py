@@ -22,9 +22,13 @@ REGS = [
     ("STEP_X", 9, "initial offset from one node to the next, x (Q.F)"),
     ("STEP_Y", 10, "initial offset from one node to the next, y (Q.F)"),
     ("PIN", 11, "write a node address {unit, node}: that node is pinned (reset unpins all)"),
-    ("CMD", 12, "write 1: lay the nodes out from START and STEP, at rest (takes N cycles)"),
+    ("CMD", 12, "write 1: lay the nodes out from START and STEP, previous positions PREV away (takes N cycles)"),
     ("KS", 13, "spring stiffness, scaled: ks h^2 / m (Q.F)"),
     ("KD", 14, "spring damping, scaled: kd h / m, or kd h^2 / m per step (Q.F)"),
+    ("GROUND", 15, "the ground boundary on its normal axis: level + sign * radius (Q.F)"),
+    ("FRICTION", 16, "ground friction factor 1 - u: the share of tangential motion kept at a contact (Q.F)"),
+    ("PREV_X", 17, "initial previous position of each free node minus its position, x: -v h (Q.F)"),
+    ("PREV_Y", 18, "initial previous position of each free node minus its position, y (Q.F)"),
 ]
 
 

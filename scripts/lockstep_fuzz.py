@@ -5,7 +5,7 @@
     lockstep_fuzz.py --replay SEED [--seed S] [--builds B]
 
 Every scene is drawn from a seed: its build (W, F, M, K, SQRT_BITS, DIV_BITS, ITER,
-SUBSTEPS and the EN_* effects, springs included), its constants (start, step, rest length, gravity,
+SUBSTEPS and the EN_* effects, springs and ground included), its constants (start, step, rest length, gravity,
 damping, pins), its mouse script and its length, all within what the RTL supports.
 A Verilator build costs about a minute, so scenes share builds: the three builds of
 the RTL test scenes and B more drawn from --seed. Each scene runs through the
@@ -33,6 +33,14 @@ BUILD = os.environ.get("BUILD", "build")
 FIXED_BUILDS = ["sim/scenes/ref000_rope.scene", "tb/scenes/chain_q10_8.scene", "tb/scenes/chain_k4_bits.scene"]
 
 
+# params.vh defines -> the fields random_build() draws (one description of a build for both)
+PARAM_FIELDS = {"W": "width", "F": "frac", "M": "units", "K": "nodes_per_unit", "SQRT_BITS": "sqrt_bits",
+                "DIV_BITS": "div_bits", "ITER": "iterations", "SUBSTEPS": "substeps", "EN_GRAVITY": "gravity",
+                "EN_DAMPING": "damping", "EN_MOUSE": "mouse", "EN_CONSTRAINTS": "constraints", "RULE": "rule",
+                "EN_SPRINGS": "springs", "EN_GROUND": "ground", "GROUND_AXIS": "ground_axis",
+                "GROUND_ABOVE": "ground_above"}
+
+
 def read_build(path):
     """The build a scene file needs, as 'strand hwgen' derives it (the one source of parameters)."""
     out = os.path.join(ROOT, BUILD, "vl", "scene-params", hashlib.sha1(path.encode()).hexdigest()[:10])
@@ -40,10 +48,20 @@ def read_build(path):
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     if p.returncode != 0:
         sys.exit(f"{p.stdout.strip()}\nFAIL lockstep: no RTL build for {path}")
+    build = {}
     with open(os.path.join(out, "params.vh")) as fh:
-        lines = [l.strip() for l in fh if l.startswith("`define") and
-                 not any(k in l for k in ("_FRAMES ", "_NCONFIG ", "_CYCLES_PER_FRAME "))]
-    return {"params": "\n".join(lines)}
+        for line in fh:
+            parts = line.split()
+            if len(parts) == 3 and parts[0] == "`define" and parts[1][len("STRAND_"):] in PARAM_FIELDS:
+                value = int(parts[2].split("'b")[-1])
+                build[PARAM_FIELDS[parts[1][len("STRAND_"):]]] = value
+    missing = set(PARAM_FIELDS.values()) - set(build)
+    if missing:
+        sys.exit(f"FAIL lockstep: {out}/params.vh lacks {sorted(missing)}")
+    for key in ("gravity", "damping", "mouse", "constraints", "springs", "ground", "ground_above"):
+        build[key] = bool(build[key])
+    build["rule"] = ["centred", "pairwise"][build["rule"]]
+    return build
 
 
 def random_build(rng):
@@ -54,7 +72,8 @@ def random_build(rng):
             "iterations": rng.randint(1, 3), "substeps": rng.randint(1, 2),
             "gravity": rng.random() < 0.8, "damping": rng.random() < 0.4, "mouse": rng.random() < 0.7,
             "constraints": rng.random() < 0.85, "rule": rng.choice(["centred", "pairwise"]),
-            "springs": rng.random() < 0.4}
+            "springs": rng.random() < 0.4, "ground": rng.random() < 0.3, "ground_axis": rng.randint(0, 1),
+            "ground_above": rng.random() < 0.5}
 
 
 def builds_for(seed, extra):
@@ -86,6 +105,8 @@ def scene_text(build, seed):
     pins = sorted(rng.sample(range(n), rng.randint(0, min(3, n))))
     if pins:
         lines.append("pinned = " + " ".join(map(str, pins)))
+    if rng.random() < 0.3:  # the whole chain starts moving
+        lines.append(f"velocity = {rng.uniform(-1, 1) * reach / 20:.6f} {rng.uniform(-1, 1) * reach / 20:.6f}")
     if build["gravity"]:
         g = rng.uniform(0, reach / 50) * build["substeps"] ** 2
         lines += ["[gravity]", f"accel = {rng.uniform(-0.3, 0.3) * g:.6f} {-g:.6f}"]
@@ -95,6 +116,13 @@ def scene_text(build, seed):
         # ks h^2 / m up to 0.5 (h = 1 / substeps): from soft to near the stability bound
         sub = build["substeps"]
         lines += ["[springs]", f"ks = {rng.uniform(0.01, 0.5) * sub * sub:.6f}", f"kd = {rng.uniform(0, 0.2) * sub:.6f}"]
+    if build.get("ground"):
+        # a boundary through the body, so that nodes hit it from the start
+        ax = build["ground_axis"]
+        mid = start[ax] + step[ax] * n / 2
+        normal = ("+" if build["ground_above"] else "-") + "xy"[ax]
+        lines += ["[ground]", f"normal = {normal}", f"level = {mid + rng.uniform(-1, 1) * abs(step[ax]) * n / 2:.6f}",
+                  f"radius = {rng.uniform(0, 4 * lsb):.6f}", f"friction = {rng.uniform(0, 1):.4f}"]
     if build["mouse"]:
         box = min(rng.uniform(rest, 4 * rest + 8 * lsb), reach)
         lines += ["[mouse]", f"box = {box:.6f} {box:.6f}", f"impulse = {rng.uniform(-rest, rest):.6f}"]

@@ -52,7 +52,8 @@ module tb_top_frames;
         .W(`STRAND_W), .F(`STRAND_F), .M(M), .K(K), .SQRT_BITS(`STRAND_SQRT_BITS), .DIV_BITS(`STRAND_DIV_BITS),
         .ITER(`STRAND_ITER), .SUBSTEPS(`STRAND_SUBSTEPS), .EN_GRAVITY(`STRAND_EN_GRAVITY),
         .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE),
-        .EN_SPRINGS(`STRAND_EN_SPRINGS)
+        .EN_SPRINGS(`STRAND_EN_SPRINGS), .EN_GROUND(`STRAND_EN_GROUND),
+        .GROUND_AXIS(`STRAND_GROUND_AXIS), .GROUND_ABOVE(`STRAND_GROUND_ABOVE)
     ) dut (
         .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_down(mouse_down),
         .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
