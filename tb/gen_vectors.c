@@ -1,12 +1,16 @@
 /*
- * gen_vectors - test vectors for the RTL arithmetic units, computed by model/fixed.c.
+ * gen_vectors - test vectors for the RTL arithmetic units, computed by model/fixed.c,
+ * and for the datapaths toward and spring_force, computed by the frame engine.
  *
  * usage: gen_vectors UNIT MODE W F BITS OUT.hex
- *   UNIT  add | mul | avg | sqrt | div
+ *        gen_vectors UNIT random W F SQRT_BITS DIV_BITS OUT.hex   (toward, spring)
+ *   UNIT  add | mul | avg | sqrt | div, and, when built with -DGEN_DATAPATHS (linked
+ *         with model/engine_fixed.c, model/scene.c and libinih), toward | spring
  *   MODE  exhaustive (every operand pair, every radicand; meant for W = 8)
  *         random     (every pair of edge values, targeted cases, and random
- *                     operands from a fixed seed)
- *   W, F  the format; BITS is SQRT_BITS for sqrt, DIV_BITS for div (ignored else)
+ *                     operands from a fixed seed; the only mode of toward, spring)
+ *   W, F  the format; BITS is SQRT_BITS for sqrt, DIV_BITS for div (ignored else);
+ *         toward and spring take both, or one BITS for both
  * Writes one record per line for $readmemh and prints the record count on stdout.
  *
  * Record: hex digits, most significant first:
@@ -18,6 +22,11 @@
  *     avg   flags 0                 a, b, y     y = fx_avg(a, b) (= fx_half(a) when b = 0)
  *     sqrt  flags {0, 0, 0, sat}    rad, y      y = fx_sqrt(rad)
  *     div   flags {0, 0, sat, dbz}  num, den, y y = fx_div(num, den)
+ *     toward flags {0, 0, excess, valid}  p_x, p_y, c_x, c_y, rest, t_x, t_y
+ *     spring flags {0, 0, 0, valid}  a_x, a_y, a_px, a_py, b_x, b_y, b_px, b_py,
+ *                                    rest, ks, kd, f_x, f_y
+ *   (toward, spring: the outputs are 0 when valid = 0; the RTL's are then unused.
+ *   The expected values come from the frame engine itself, see GEN_DATAPATHS below.)
  * The "sat" flags are computed here independently of the model, from exact integer
  * arithmetic, and the model's result is checked against them (a clamped result must
  * be the limit).
@@ -329,10 +338,337 @@ static void gen_div(int exhaustive)
     for (int i = 0; i < N_RANDOM; i++) vec_div(rand_w(), (i % 64) ? rand_w() : 0);
 }
 
+#ifdef GEN_DATAPATHS
+#include "../model/sim.h"
+
+/*
+ * rtl/toward.v and rtl/spring_force.v: the expected values come from the frame
+ * engine's own code (model/engine_body.h through engine_fixed.c), on a two-node
+ * graph body (node 0, node 1, edge 0 -> 1) set up by sim_fx_init on an in-memory
+ * scene. Each vector writes its raw inputs into the engine's state and calls:
+ *   toward, excess = 0: sim_fx_centred_node(s, 1) with pos[0] = P, pos[1] = C and
+ *       dist = rest. Node 1 has no lower neighbour, so it moves to the point
+ *       toward(0 -> 1) = P + d * fx_div(rest, |d|); it returns valid.
+ *   toward, excess = 1: sim_fx_pair_edge(s, 0) with pos[0] = P (end a), pos[1] = C
+ *       (end b) and rest[0] = rest, twice: with b pinned, a' = fx_add(P, e); with a
+ *       pinned, b' = fx_sub(C, e). Either gives the excess e back exactly unless it
+ *       saturated; when both saturated, e is taken from the composition below, which
+ *       must reproduce both a' and b'. `skipped` counts a zero length (valid = 0).
+ *   spring: sim_fx_spring_edge(s, 0) with every acc zeroed, so acc[0] = fx_add(0, F)
+ *       = F exactly, and acc[1] = fx_sub(0, F); `skipped` counts coincident ends.
+ * Every toward vector is also composed from fixed.h in the order rtl/toward.v's
+ * header states (d = C - P, len = fx_sqrt(sumsq), r = fx_div(rest, len), then
+ * fx_add(P, fx_mul(d, r)) or fx_sub(d, fx_mul(d, r))); the generator stops if the
+ * composition and the engine disagree.
+ * Inputs are raw W-bit values; rest lengths are kept in 0..fx_max (the engine
+ * holds them as signed values).
+ */
+static scene dp_sc;
+static sim_fx dp_s;
+static double dp_pos[2][3], dp_prev[2][3];
+static bool dp_pinned[2];
+static scene_edge dp_edge;
+
+static void dp_init(edge_kind kind)
+{
+    memset(&dp_sc, 0, sizeof dp_sc);
+    dp_sc.dim = 2;
+    dp_sc.number = NUMBER_FIXED;
+    dp_sc.fmt = fmt;
+    dp_sc.dt = 1;
+    dp_sc.frames = 1;
+    dp_sc.substeps = 1;
+    dp_sc.iterations = 1;
+    dp_sc.integrator = INTEGRATOR_VERLET;
+    dp_sc.body = BODY_GRAPH;
+    dp_sc.units = 1;
+    dp_sc.nodes_per_unit = 2;
+    dp_sc.n_nodes = 2;
+    dp_sc.pos = dp_pos;
+    dp_sc.prev = dp_prev;
+    dp_sc.pinned = dp_pinned;
+    dp_sc.mass = 1;
+    dp_edge = (scene_edge){0, 1, kind, 0.0};
+    dp_sc.n_edges = 1;
+    dp_sc.edges = &dp_edge;
+    dp_sc.en_constraints = kind != EDGE_SPRING;
+    dp_sc.en_springs = kind == EDGE_SPRING;
+    dp_sc.rule = RULE_PAIRWISE;
+    if (!sim_fx_init(&dp_s, &dp_sc, &fmt)) die("sim_fx_init failed");
+}
+
+static void dp_node(int i, fx_t x, fx_t y, fx_t px, fx_t py)
+{
+    dp_s.pos[i][0] = x;
+    dp_s.pos[i][1] = y;
+    dp_s.pos[i][2] = 0;
+    dp_s.prev[i][0] = px;
+    dp_s.prev[i][1] = py;
+    dp_s.prev[i][2] = 0;
+    for (int k = 0; k < 3; k++) dp_s.acc[i][k] = 0;
+}
+
+static fx_t rest_w(void) { return (fx_t)(rng() & (uint64_t)fx_max(&fmt)) >> (rng() % (uint64_t)fmt.width); }
+
+/* Random vectors at W <= 16 are twice as many as above: the wide datapaths
+   simulate slowly (about 70 and 110 cycles per vector at W = 32). */
+static int dp_scale(void) { return fmt.width > 16 ? 1 : 2; }
+
+/* ---- toward ---- */
+static void vec_toward(fx_t px, fx_t py, fx_t cx, fx_t cy, fx_t rest, int excess)
+{
+    const fx_t p[2] = {px, py}, c[2] = {cx, cy};
+    fx_t d[2], comp[2], t[2] = {0, 0};
+    bool dz = false;
+    int valid;
+    if (rest < 0) die("toward: negative rest length");
+    /* composed in rtl/toward.v's order */
+    for (int k = 0; k < 2; k++) d[k] = fx_sub(&fmt, c[k], p[k]);
+    fx_t r = fx_div(&fmt, (uint32_t)rest, (uint32_t)fx_sqrt(&fmt, fx_sumsq(d[0], d[1], 0)), &dz);
+    for (int k = 0; k < 2; k++)
+        comp[k] = excess ? fx_sub(&fmt, d[k], fx_mul(&fmt, d[k], r)) : fx_add(&fmt, p[k], fx_mul(&fmt, d[k], r));
+    /* the engine */
+    if (!excess) {
+        dp_pinned[0] = dp_pinned[1] = false;
+        dp_s.dist = rest;
+        dp_node(0, px, py, px, py);
+        dp_node(1, cx, cy, cx, cy);
+        dp_s.skipped = 0;
+        valid = sim_fx_centred_node(&dp_s, 1);
+        if (valid != (dp_s.skipped == 0)) die("toward: centred_node result and skipped count disagree");
+        for (int k = 0; k < 2; k++) {
+            if (!valid && dp_s.pos[1][k] != c[k]) die("toward: centred_node moved a node with no direction");
+            if (valid) t[k] = dp_s.pos[1][k];
+        }
+    } else {
+        fx_t a1[2], b2[2];
+        int valid2;
+        dp_s.rest[0] = rest;
+        dp_pinned[0] = false; dp_pinned[1] = true;   /* b fixed: a += e */
+        dp_node(0, px, py, px, py);
+        dp_node(1, cx, cy, cx, cy);
+        dp_s.skipped = 0;
+        sim_fx_pair_edge(&dp_s, 0);
+        valid = dp_s.skipped == 0;
+        for (int k = 0; k < 2; k++) a1[k] = dp_s.pos[0][k];
+        dp_pinned[0] = true; dp_pinned[1] = false;   /* a fixed: b -= e */
+        dp_node(0, px, py, px, py);
+        dp_node(1, cx, cy, cx, cy);
+        dp_s.skipped = 0;
+        sim_fx_pair_edge(&dp_s, 0);
+        valid2 = dp_s.skipped == 0;
+        for (int k = 0; k < 2; k++) b2[k] = dp_s.pos[1][k];
+        dp_pinned[0] = dp_pinned[1] = false;
+        if (valid != valid2) die("toward: pair_edge zero length depends on which end is fixed");
+        for (int k = 0; k < 2 && valid; k++) {
+            fx_t e;
+            if (a1[k] > fx_min(&fmt) && a1[k] < fx_max(&fmt)) e = a1[k] - p[k];
+            else if (b2[k] > fx_min(&fmt) && b2[k] < fx_max(&fmt)) e = c[k] - b2[k];
+            else e = comp[k];
+            if (fx_add(&fmt, p[k], e) != a1[k] || fx_sub(&fmt, c[k], e) != b2[k]) die("toward: excess not recovered from pair_edge");
+            t[k] = e;
+        }
+        for (int k = 0; k < 2 && !valid; k++)
+            if (a1[k] != p[k] || b2[k] != c[k]) die("toward: pair_edge moved a node with no direction");
+    }
+    if (valid != !dz) die("toward: engine and composition disagree on the zero length");
+    if (valid && (t[0] != comp[0] || t[1] != comp[1])) die("toward: engine and rtl/toward.v's order of operations disagree");
+    rec_begin((unsigned)(excess << 1 | valid));
+    put(digits, (uint64_t)px); put(digits, (uint64_t)py); put(digits, (uint64_t)cx); put(digits, (uint64_t)cy);
+    put(digits, (uint64_t)rest); put(digits, (uint64_t)t[0]); put(digits, (uint64_t)t[1]);
+    rec_end();
+}
+
+static void vec_toward2(fx_t px, fx_t py, fx_t cx, fx_t cy, fx_t rest)
+{
+    vec_toward(px, py, cx, cy, rest, 0);
+    vec_toward(px, py, cx, cy, rest, 1);
+}
+
+/* a + b wrapped to W bits (inputs only: any W-bit value is a valid input). */
+static fx_t addw(fx_t a, fx_t b) { return sext((uint64_t)((int64_t)a + b)); }
+
+/* A coordinate: log-uniform magnitude half of the time, any sign. */
+static fx_t coord(void) { return sext(rand_w()); }
+
+/* A value of about `mag` (>= 1) or less, either sign. */
+static fx_t near(fx_t mag)
+{
+    fx_t v = (fx_t)(rng() % (uint64_t)mag);
+    return (rng() & 1) ? -v : v;
+}
+
+static void gen_toward(void)
+{
+    const fx_t max = fx_max(&fmt), min = fx_min(&fmt), one = fx_one(&fmt);
+    const fx_t lim[] = {min, -1, 0, 1, max};
+    const fx_t rests[] = {0, 1, one, max, one / 2 + 1, fx_sat(&fmt, 3 * (int64_t)one)};
+    int i = 0;
+    /* Coordinates at the range limits: saturating differences, both rules. */
+    for (int a = 0; a < 5; a++)
+        for (int b = 0; b < 5; b++)
+            for (int c = 0; c < 5; c++)
+                for (int d = 0; d < 5; d++, i++)
+                    vec_toward(lim[a], lim[b], lim[c], lim[d], (i % 7 == 6) ? rest_w() : rests[i % 6], i & 1);
+    /* Zero length: C = P, at the corners and anywhere. */
+    for (i = 0; i < 40; i++) {
+        fx_t x = i < 4 ? ((i & 1) ? max : min) : coord(), y = i < 4 ? ((i & 2) ? max : min) : coord();
+        vec_toward2(x, y, x, y, (i % 3) ? rest_w() : rests[i % 6]);
+    }
+    /* Short differences, every sign (a length of a few LSBs, maybe rounded to 0). */
+    for (int dx = -3; dx <= 3; dx++)
+        for (int dy = -3; dy <= 3; dy++, i++) {
+            fx_t x = near(max / 2), y = near(max / 2);
+            vec_toward2(x, y, x + dx, y + dy, rests[i % 6]);
+        }
+    /* Along the axes, negative and positive, every magnitude. */
+    for (i = 0; i < fmt.width - 1; i++) {
+        fx_t m = (fx_t)1 << i, x = near(max / 4), y = near(max / 4);
+        vec_toward(x, y, x - m, y, rest_w(), i & 1);
+        vec_toward(x, y, x, y - m, rest_w(), !(i & 1));
+        vec_toward(x, y, x + m, y, rests[i % 6], i & 1);
+        vec_toward(x, y, x, y + m, rests[i % 6], !(i & 1));
+    }
+    /* Rest length equal to the length (excess about 0), and rest 0 (T = P, e = d). */
+    for (i = 0; i < 100; i++) {
+        fx_t x = near(max / 2), y = near(max / 2), cx = x + near(max / 2), cy = y + near(max / 2);
+        fx_t len = fx_sqrt(&fmt, fx_sumsq(fx_sub(&fmt, cx, x), fx_sub(&fmt, cy, y), 0));
+        vec_toward(x, y, cx, cy, len, i & 1);
+        vec_toward(x, y, cx, cy, 0, !(i & 1));
+    }
+    /* A rope: points about one unit apart, rest about one unit. */
+    for (i = 0; i < 400 * dp_scale(); i++) {
+        fx_t x = near(max / 2), y = near(max / 2);
+        vec_toward(x, y, x + near(2 * one), y + near(2 * one), one / 2 + (fx_t)(rng() % (uint64_t)one), i & 1);
+    }
+    /* Anything. */
+    for (i = 0; i < 800 * dp_scale(); i++) vec_toward(coord(), coord(), coord(), coord(), rest_w(), i & 1);
+}
+
+/* ---- spring ---- */
+static void vec_spring(const fx_t v[11])
+{
+    /* v: a_x a_y a_px a_py b_x b_y b_px b_py rest ks kd */
+    fx_t f[2] = {0, 0};
+    int valid;
+    if (v[8] < 0) die("spring: negative rest length");
+    dp_node(0, v[0], v[1], v[2], v[3]);
+    dp_node(1, v[4], v[5], v[6], v[7]);
+    dp_s.rest[0] = v[8];
+    dp_s.ks = v[9];
+    dp_s.kd = v[10];
+    dp_s.skipped = 0;
+    sim_fx_spring_edge(&dp_s, 0);
+    valid = dp_s.skipped == 0;
+    for (int k = 0; k < 2; k++) {
+        if (dp_s.acc[1][k] != fx_sub(&fmt, 0, dp_s.acc[0][k])) die("spring: B does not take -F");
+        if (!valid && dp_s.acc[0][k] != 0) die("spring: a force with coincident ends");
+        f[k] = dp_s.acc[0][k];
+    }
+    rec_begin((unsigned)valid);
+    for (int k = 0; k < 11; k++) put(digits, (uint64_t)v[k]);
+    put(digits, (uint64_t)f[0]); put(digits, (uint64_t)f[1]);
+    rec_end();
+}
+
+static void gen_spring(void)
+{
+    const fx_t max = fx_max(&fmt), min = fx_min(&fmt), one = fx_one(&fmt);
+    const fx_t lim[] = {min, -1, 0, 1, max};
+    const fx_t rests[] = {0, 1, one, max, fx_sat(&fmt, 3 * (int64_t)one)};
+    const fx_t ks_edge[] = {max, max - 1, min, one, one / 16 + 1, -1, 0};
+    const fx_t kd_edge[] = {0, max, min, one / 4, 1, -one};
+    fx_t v[11];
+    int i = 0;
+    /* Ends at the range limits (saturating d), velocities 0, saturating or random. */
+    for (int a = 0; a < 5; a++)
+        for (int b = 0; b < 5; b++)
+            for (int c = 0; c < 5; c++)
+                for (int d = 0; d < 5; d++, i++) {
+                    v[0] = lim[a]; v[1] = lim[b]; v[4] = lim[c]; v[5] = lim[d];
+                    for (int k = 0; k < 2; k++) {
+                        int j = (i / 3 + k) % 3;
+                        v[2 + k] = j == 0 ? v[k] : j == 1 ? (v[k] < 0 ? max : min) : coord();
+                        v[6 + k] = j == 0 ? v[4 + k] : j == 1 ? (v[4 + k] < 0 ? max : min) : coord();
+                    }
+                    v[8] = (i % 6 == 5) ? rest_w() : rests[i % 5];
+                    v[9] = ks_edge[i % 7];
+                    v[10] = kd_edge[i % 6];
+                    vec_spring(v);
+                }
+    /* Coincident ends, moving or not. */
+    for (i = 0; i < 60; i++) {
+        v[0] = v[4] = i < 4 ? ((i & 1) ? max : min) : coord();
+        v[1] = v[5] = i < 4 ? ((i & 2) ? max : min) : coord();
+        for (int k = 0; k < 2; k++) {
+            v[2 + k] = (i & 4) ? v[k] : coord();
+            v[6 + k] = (i & 8) ? v[4 + k] : coord();
+        }
+        v[8] = rests[i % 5]; v[9] = ks_edge[i % 7]; v[10] = kd_edge[i % 6];
+        vec_spring(v);
+    }
+    /* Short differences, every sign. */
+    for (int dx = -3; dx <= 3; dx++)
+        for (int dy = -3; dy <= 3; dy++)
+            for (int r = 0; r < 2; r++, i++) {
+                v[0] = near(max / 2); v[1] = near(max / 2);
+                v[4] = v[0] + dx; v[5] = v[1] + dy;
+                for (int k = 0; k < 2; k++) {
+                    v[2 + k] = v[k] + near(one);
+                    v[6 + k] = v[4 + k] + near(one);
+                }
+                v[8] = rests[i % 5]; v[9] = ks_edge[i % 7]; v[10] = kd_edge[i % 6];
+                vec_spring(v);
+            }
+    /* Saturating velocities and velocity differences. */
+    for (i = 0; i < 120; i++) {
+        for (int k = 0; k < 2; k++) {
+            v[k] = coord(); v[4 + k] = coord();
+            v[2 + k] = (i & 1) ? (v[k] < 0 ? max : min) : addw(v[k], near(one));
+            v[6 + k] = (i & 2) ? (v[4 + k] < 0 ? max : min) : addw(v[4 + k], near(one));
+            if (i & 4) { v[k] = max; v[2 + k] = min + (fx_t)(rng() % 4); v[4 + k] = min; v[6 + k] = max - (fx_t)(rng() % 4); }
+        }
+        v[8] = rest_w(); v[9] = (i & 8) ? ks_edge[i % 7] : coord(); v[10] = (i & 16) ? kd_edge[i % 6] : coord();
+        vec_spring(v);
+    }
+    /* Rest length 0 and the rest length equal to the length, large constants. */
+    for (i = 0; i < 200; i++) {
+        for (int k = 0; k < 2; k++) {
+            v[k] = near(max / 2); v[4 + k] = v[k] + near(max / 2);
+            v[2 + k] = v[k] + near(one); v[6 + k] = v[4 + k] + near(one);
+        }
+        v[8] = (i & 1) ? 0 : fx_sqrt(&fmt, fx_sumsq(fx_sub(&fmt, v[4], v[0]), fx_sub(&fmt, v[5], v[1]), 0));
+        v[9] = (i & 2) ? ks_edge[i % 7] : (fx_t)(rng() % (uint64_t)max);
+        v[10] = (i & 4) ? kd_edge[i % 6] : (fx_t)(rng() % (uint64_t)max);
+        vec_spring(v);
+    }
+    /* A spring rope: ends about one unit apart, slow, ks and kd below one. */
+    for (i = 0; i < 350 * dp_scale(); i++) {
+        for (int k = 0; k < 2; k++) {
+            v[k] = near(max / 2); v[4 + k] = v[k] + near(2 * one);
+            v[2 + k] = v[k] + near(one / 8 + 1); v[6 + k] = v[4 + k] + near(one / 8 + 1);
+        }
+        v[8] = one / 2 + (fx_t)(rng() % (uint64_t)one);
+        v[9] = (fx_t)(rng() % (uint64_t)one);
+        v[10] = (fx_t)(rng() % (uint64_t)(one / 2));
+        vec_spring(v);
+    }
+    /* Anything. */
+    for (i = 0; i < 600 * dp_scale(); i++) {
+        for (int k = 0; k < 11; k++) v[k] = coord();
+        v[8] = rest_w();
+        vec_spring(v);
+    }
+}
+#endif
+
 int main(int argc, char **argv)
 {
-    if (argc != 7) die("usage: gen_vectors add|mul|avg|sqrt|div exhaustive|random W F BITS OUT.hex");
+    if (argc != 7 && argc != 8)
+        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|spring exhaustive|random W F BITS [DIV_BITS] OUT.hex");
     const char *unit = argv[1];
+    const int datapath = !strcmp(unit, "toward") || !strcmp(unit, "spring");
+    if (argc == 8 && !datapath) die("SQRT_BITS and DIV_BITS apart are for toward and spring");
     int exhaustive;
     if (!strcmp(argv[2], "exhaustive")) exhaustive = 1;
     else if (!strcmp(argv[2], "random")) exhaustive = 0;
@@ -340,16 +676,22 @@ int main(int argc, char **argv)
     fmt.width = atoi(argv[3]);
     fmt.frac = atoi(argv[4]);
     fmt.sqrt_bits = fmt.div_bits = atoi(argv[5]);
+    if (argc == 8) fmt.div_bits = atoi(argv[6]);
     const char *bad = fx_format_check(&fmt);
     if (bad) die(bad);
     if (exhaustive && fmt.width > 12) die("exhaustive vectors are for W <= 12");
+    if (exhaustive && datapath) die("toward and spring have random vectors only");
     digits = (fmt.width + 3) / 4;
     rad_digits = (2 * fmt.width + 3) / 4;
-    out = fopen(argv[6], "w");
+    out = fopen(argv[argc - 1], "w");
     if (!out) die("cannot open output file");
     if (!strcmp(unit, "add") || !strcmp(unit, "mul") || !strcmp(unit, "avg")) gen_binary(unit, exhaustive);
     else if (!strcmp(unit, "sqrt")) gen_sqrt(exhaustive);
     else if (!strcmp(unit, "div")) gen_div(exhaustive);
+#ifdef GEN_DATAPATHS
+    else if (!strcmp(unit, "toward")) { dp_init(EDGE_ROD); gen_toward(); sim_fx_free(&dp_s); }
+    else if (!strcmp(unit, "spring")) { dp_init(EDGE_SPRING); gen_spring(); sim_fx_free(&dp_s); }
+#endif
     else die("unknown unit");
     if (fclose(out)) die("write failed");
     printf("%ld\n", count);

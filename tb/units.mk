@@ -1,9 +1,11 @@
-# tb/units.mk - tests and lint of the arithmetic units (rtl/fx_*.v).
+# tb/units.mk - tests and lint of the arithmetic units (rtl/fx_*.v) and of the two
+# datapaths built from them (rtl/toward.v, rtl/spring_force.v).
 #
 # Included by the top Makefile; also works alone from the repository root:
 #     make -f tb/units.mk test-units        # every unit test below
 #     make -f tb/units.mk lint-units        # verilator -Wall and iverilog -Wall, no warnings
 #     make -f tb/units.mk test-units-fault  # shows that a planted fault is caught
+#     make -f tb/units.mk units-datapaths   # the datapath testbenches alone
 # Independent tests run in parallel under make -j.
 #
 # test-units runs:
@@ -12,7 +14,13 @@
 #     W=8, edge values plus fixed-seed random ones at W=18 and W=32, including
 #     reduced SQRT_BITS/DIV_BITS;
 #   - the Verilator test tb/exhaustive_units.cpp: every operand at W=12 against
-#     model/fixed.c called directly (in three parallel processes).
+#     model/fixed.c called directly (in three parallel processes);
+#   - one Icarus testbench (tb/tb_toward.v, tb/tb_spring_force.v) per configuration
+#     in UNITS_DP_TESTS, with vectors from tb/gen_vectors.c built with the frame
+#     engine (model/engine_fixed.c): edge cases and fixed-seed random ones at W=32
+#     with full SQRT_BITS/DIV_BITS and at W=12 with reduced ones. The datapaths are
+#     compiled from UNITS_RTL_DIR (default rtl/), so a modified copy can be tested:
+#         make -f tb/units.mk units-datapaths UNITS_RTL_DIR=/tmp/rtl BUILD=/tmp/b
 # Each test prints "PASS <name> (<N> vectors)" or "FAIL <name>: ..."; a recipe fails
 # on a FAIL line, a non-zero exit, a timeout, or a missing PASS line.
 # All variables are prefixed UNITS_ (BUILD is shared with the top Makefile).
@@ -63,6 +71,14 @@ UNITS_ICARUS_TESTS := \
     fx_div_w32_f16_b8_random:div:random:32:16:8 \
     fx_div_w32_f30_b31_random:div:random:32:30:31
 
+# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS (module is toward or
+# spring_force; its testbench is tb/tb_<module>.v).
+UNITS_DP_TESTS := \
+    toward_w32_f16_s31_d31:toward:32:16:31:31 \
+    toward_w12_f6_s8_d9:toward:12:6:8:9 \
+    spring_force_w32_f16_s31_d31:spring_force:32:16:31:31 \
+    spring_force_w12_f6_s8_d9:spring_force:12:6:8:9
+
 # Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
 UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
 UNITS_PARAMS_mul  = -Ptb_fx_mul.W=$(1) -Ptb_fx_mul.F=$(2)
@@ -86,9 +102,9 @@ else \
 fi
 endef
 
-.PHONY: test-units lint-units test-units-fault units-icarus units-verilator
+.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths
 
-test-units: units-icarus units-verilator
+test-units: units-icarus units-verilator units-datapaths
 
 $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 	@mkdir -p $(dir $@)
@@ -113,6 +129,42 @@ units-icarus: units-run-$(1)
 endef
 
 $(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
+
+# ---- the datapaths: toward, spring_force ----
+UNITS_RTL_DIR  ?= $(UNITS_ROOT)/rtl
+UNITS_DP_UNITS := fx_add fx_mul fx_sqrt fx_div
+UNITS_GEN_DP   := $(UNITS_BUILD)/gen_vectors_dp
+UNITS_DP_MODEL := $(UNITS_MODEL) $(addprefix $(UNITS_ROOT)/model/,engine_fixed.c engine_body.h sim.h scene.c scene.h)
+UNITS_INIH      = $(shell pkg-config --cflags --libs inih 2>/dev/null || echo -linih)
+# the generator's name for each module's vectors
+UNITS_DP_GEN_toward       := toward
+UNITS_DP_GEN_spring_force := spring
+
+# The generator with the frame engine: the expected values come from its own code.
+$(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL)
+	@mkdir -p $(dir $@)
+	$(UNITS_CC) $(UNITS_CFLAGS) -DGEN_DATAPATHS -o $@ $(UNITS_ROOT)/tb/gen_vectors.c \
+	    $(addprefix $(UNITS_ROOT)/model/,fixed.c engine_fixed.c scene.c) $(UNITS_INIH) -lm
+
+# One datapath test: vectors (cached), simulator (cached), and a run (always).
+# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS
+define UNITS_DP_RULE
+$(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
+	@mkdir -p $$(dir $$@)
+	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $$@ > $$@.n
+
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS)))
+	@mkdir -p $$(dir $$@)
+	$(UNITS_IVERILOG) -g2005 -Wall -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -o $$@ $$^
+
+.PHONY: units-run-$(1)
+units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+
+units-datapaths: units-run-$(1)
+endef
+
+$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
 
 # Verilator exhaustive test at W=12, F=6, full SQRT_BITS/DIV_BITS.
 UNITS_EXH_DIR := $(UNITS_BUILD)/exhaustive_w12
@@ -143,6 +195,8 @@ UNITS_LINT_PARAMS_avg  := "" "-GW=8"
 UNITS_LINT_PARAMS_mul  := "" "-GW=8 -GF=1" "-GW=8 -GF=6" "-GW=18 -GF=8"
 UNITS_LINT_PARAMS_sqrt := "" "-GW=8 -GSQRT_BITS=1" "-GW=8 -GSQRT_BITS=3" "-GW=32 -GSQRT_BITS=8" "-GW=9 -GSQRT_BITS=7"
 UNITS_LINT_PARAMS_div  := "" "-GW=8 -GF=1 -GDIV_BITS=1" "-GW=8 -GF=6 -GDIV_BITS=3" "-GW=32 -GF=30 -GDIV_BITS=8"
+# the datapath testbenches (with the RTL under them), Verilator with --timing
+UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -GF=1 -GSQRT_BITS=1 -GDIV_BITS=1"
 
 lint-units:
 	@set -e; cd $(UNITS_ROOT); \
@@ -153,7 +207,11 @@ lint-units:
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
-	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches are clean"
+	$(foreach m,toward spring_force,for p in $(UNITS_LINT_PARAMS_DP); do \
+	    $(UNITS_VERILATOR) --lint-only -Wall --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) 2>&1); \
+	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
+	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,spring_force}.v with the datapaths, are clean"
 
 # Planted fault: fx_mul with ties rounded up instead of to even, built from a copy
 # in the build tree (rtl/ is untouched). The exhaustive W=8 testbench must FAIL.
