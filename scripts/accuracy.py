@@ -678,7 +678,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     A("The knobs: the number format Q(W-F).F, `SQRT_BITS` and `DIV_BITS` (root and quotient bits resolved), "
       "constraint `iterations` per substep, `substeps` per frame at a fixed frame time (1/60 s: a substep is "
       "h = dt / substeps), and the constraint rule (`centred`, reference 000, which the RTL builds; `pairwise`, which it "
-      "does not build yet). The errors:")
+      "builds too). The errors:")
     A("")
     A("- **against double**: the same scene, knobs and rule run in `double` (model/engine_body.h compiled twice); RMS "
       "and largest node distance over every frame and node, in rest lengths. This isolates rounding.")
