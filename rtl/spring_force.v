@@ -24,8 +24,9 @@
  * starts the root; the root is there in cycle SQRT_BITS+4 and starts the divider for
  * u.x; u.x is there DIV_BITS+2 cycles later and starts it for u.y; DIV_BITS+2 cycles
  * later u.y is there; the next six cycles form the six products; done is high in
- * cycle LATENCY = SQRT_BITS + 2 DIV_BITS + 15, for one cycle. f_x, f_y, valid hold
- * until the next result. start is accepted only when idle or in the done cycle.
+ * cycle LATENCY = SQRT_BITS + 2 DIV_BITS + 15, for one cycle. f_x is new from cycle
+ * LATENCY - 1, f_y and valid from cycle LATENCY: read them at done. They hold until
+ * the next operation forms them. start is accepted only when idle or in the done cycle.
  */
 module spring_force #(
     parameter integer W         = 32,    // word width, bits

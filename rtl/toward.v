@@ -24,8 +24,9 @@
  * d.y and starts the square root; the root is there in cycle SQRT_BITS+4 and
  * starts the divider in that cycle; the quotient is there DIV_BITS+2 cycles later;
  * the next two cycles form T.x and T.y; done is high in cycle
- * LATENCY = SQRT_BITS + DIV_BITS + 9, for one cycle. t_x, t_y, valid hold until
- * the next result. start is accepted only when idle or in the done cycle.
+ * LATENCY = SQRT_BITS + DIV_BITS + 9, for one cycle. t_x is new from cycle
+ * LATENCY - 1, t_y and valid from cycle LATENCY: read them at done. They hold
+ * until the next operation forms them. start is accepted only when idle or in the done cycle.
  */
 module toward #(
     parameter integer W         = 32,    // word width, bits
