@@ -1,0 +1,830 @@
+#!/usr/bin/env python3
+"""effects.py - what each effect costs strand_top, and that a switched-off effect costs nothing.
+
+Run from the repository root (scripts/effects.mk does):
+
+    effects.py doc  [--out docs/effects.md] [--frames N] [options]
+        For the body of scripts/synth.py (COMMON parameters, the 4x5 chain) with no
+        effect, and with each effect of EFFECTS: a scene, `strand hwgen` on it (the
+        parameters `make sim` would build), Yosys (generic `synth`, `synth_ice40
+        -dsp`, `synth_ecp5`) on those parameters, and the Verilator harness in
+        lockstep for N frames, whose measured cycles per frame must equal the
+        formula hwgen exports (hw_cycles_per_frame); then writes the document.
+    effects.py test [--effect NAME ...] [--frames N] [options]
+        The gating check, on a small body, generic Yosys only. For each effect X and
+        a scene S that names it: (a) S built with X's enable parameter(s) forced to
+        0 (every other parameter as hwgen derives it from S, and the harness still
+        writes X's registers and drives its inputs), (b) S without X's lines, the
+        build that never had X. (a) and (b) must have the same generic cells, type
+        by type, pass lockstep with the same cycles per frame and give the same
+        outputs in every cycle; S as built must cost more cells than (b). One PASS
+        or FAIL line per effect; exit status 1 on any FAIL.
+    effects.py list
+        the effects, one per line: name, Verilog parameters, scene lines.
+
+Options: --rtl-dir DIR (default rtl: every DIR/*.v is read, so a scratch copy can be
+checked), --build DIR (default build/effects), --gen DIR (build/gen: strand_regs.vh
+and .h), --strand FILE (build/strand), --lib FILE (build/libstrand.a), --jobs N.
+
+Everything is cached under --build: per parameter set, each Yosys flow and each
+harness build keeps a stamp holding a hash of its commands, the tool version and the
+contents of its sources (RTL, generated headers, harness, model library), as
+scripts/synth.py does; a stale or missing stamp runs it again. Standard library only.
+"""
+import argparse
+import concurrent.futures
+import glob
+import hashlib
+import json
+import os
+import re
+import subprocess
+import sys
+import threading
+import time
+
+sys.dont_write_bytecode = True  # no scripts/__pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import synth  # noqa: E402  (the Yosys commands, caching and `stat` readers of make synth)
+
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+# ---- the effects: one row each ----
+#
+# name    short name (test output, --effect)
+# title   what the document calls it
+# scene   the lines that turn the effect on, by scene section: S is the body plus
+#         these; "without the effect" is the body without them
+# params  the strand_top parameters the effect sets, as hwgen must derive them from S
+# enable  (optional) the parameters the gating test forces to 0; default: every EN_*
+#         among params
+# context (optional) lines both S and the scene without the effect carry (an effect
+#         that needs another one to do anything); its cost is measured over them
+# body    (optional) sections that replace the body's, in both (a graph body, 3D)
+#
+# The values are run-time constants: they change no cell and no cycle, but the
+# lockstep runs use them, so they must make a valid scene on both bodies below.
+GRAVITY = {"gravity": ["accel = 0.5 -9.8"]}
+
+EFFECTS = [
+    dict(name="gravity", title="gravity",
+         scene=GRAVITY,
+         params={"EN_GRAVITY": 1}),
+    dict(name="damping", title="Verlet damping",
+         scene={"time": ["damping = 0.02"]},
+         context=GRAVITY,  # damping acts on velocity: without a force the chain never moves
+         params={"EN_DAMPING": 1}),
+    dict(name="mouse", title="mouse impulse",
+         scene={"mouse": ["box = 2 2", "impulse = 1", "event = 0 -2.5 8 1", "event = 2 -2.5 8 0",
+                          "event = 3 0.5 8 1"]},
+         params={"EN_MOUSE": 1}),
+    dict(name="springs", title="damped springs",
+         scene={"springs": ["ks = 40", "kd = 0.8"]},
+         params={"EN_SPRINGS": 1}),
+    dict(name="ground", title="ground collision with friction",
+         scene={"ground": ["normal = +y", "level = 7.5", "radius = 0.1", "friction = 0.5"]},
+         context=GRAVITY,  # the chain falls onto it
+         params={"EN_GROUND": 1, "GROUND_AXIS": 1, "GROUND_ABOVE": 1}),
+    dict(name="centred", title="constraints, centred rule (RULE 0)",
+         scene={"constraints": ["rule = centred"]},
+         params={"EN_CONSTRAINTS": 1, "RULE": 0}),
+    dict(name="pairwise", title="constraints, pairwise rule (RULE 1)",
+         scene={"constraints": ["rule = pairwise"]},
+         params={"EN_CONSTRAINTS": 1, "RULE": 1}),
+]
+
+# The run-time part of every body: a horizontal chain pinned at node 0, its links
+# longer than their rest length, so that constraints and springs have work to do.
+BODY_RUNTIME = {
+    "time": ["dt = 0.25"],
+    "chain": ["start = -4 8", "step = 1.5 0", "rest = 1.2", "pinned = 0"],
+}
+
+
+def doc_body():
+    """The body of docs/resources.md: synth.py's COMMON parameters on its 4x5 chain."""
+    c = dict(synth.COMMON)
+    m, k = synth.CONFIG_MK[synth.CHECK_CONFIG]
+    build = {"W": c["W"], "F": c["F"], "M": m, "K": k, "SQRT_BITS": c["SQRT_BITS"], "DIV_BITS": c["DIV_BITS"],
+             "ITER": c["ITER"], "SUBSTEPS": c["SUBSTEPS"]}
+    return f"{synth.CHECK_CONFIG} chain", build
+
+
+# The gating test's body: small, so that Yosys and Verilator take seconds.
+TEST_BUILD = {"W": 16, "F": 8, "M": 2, "K": 2, "SQRT_BITS": 6, "DIV_BITS": 6, "ITER": 2, "SUBSTEPS": 2}
+
+SECTION_ORDER = ["scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground"]
+
+
+def body_sections(build):
+    """Scene sections for a body given as strand_top parameters."""
+    b = build
+    return {
+        "format": [f"width = {b['W']}", f"frac = {b['F']}", f"sqrt_bits = {b['SQRT_BITS']}", f"div_bits = {b['DIV_BITS']}"],
+        "time": [f"substeps = {b['SUBSTEPS']}", f"iterations = {b['ITER']}"] + BODY_RUNTIME["time"],
+        "chain": [f"units = {b['M']}", f"nodes_per_unit = {b['K']}"] + BODY_RUNTIME["chain"],
+    }
+
+
+def enable_params(row):
+    return row.get("enable") or [p for p in row["params"] if p.startswith("EN_")]
+
+
+# ---- scenes ----
+
+def merge(*parts):
+    """Sections in order; a later part adds lines to a section, or replaces it when it
+    comes from a row's `body`."""
+    out = {}
+    for part, replace in parts:
+        for sec, lines in part.items():
+            if replace or sec not in out:
+                out[sec] = list(lines)
+            else:
+                out[sec] += lines
+    return out
+
+
+def scene_text(name, sections, frames):
+    secs = merge((sections, False), ({"scene": [f"name = {name}"], "time": [f"frames = {frames}"]}, False))
+    order = sorted(secs, key=lambda s: SECTION_ORDER.index(s) if s in SECTION_ORDER else len(SECTION_ORDER))
+    lines = [f"; written by scripts/effects.py: {name}"]
+    for sec in order:
+        lines.append(f"[{sec}]")
+        lines += secs[sec]
+    return "\n".join(lines) + "\n"
+
+
+def scenes_of(row, build):
+    """(S, S without the effect) as section dicts."""
+    body = merge((body_sections(build), False), (row.get("body", {}), True))
+    without = merge((body, False), (row.get("context", {}), False))
+    return merge((without, False), (row["scene"], False)), without
+
+
+# ---- parameters from `strand hwgen` ----
+
+class Failure(Exception):
+    pass
+
+
+def verilog_int(text):
+    """16, 1'b1, 8'hff -> int."""
+    text = text.strip()
+    m = re.fullmatch(r"(?:\d+)?'[sS]?([bBdDhHoO])([0-9a-fA-F_xXzZ]+)", text)
+    if m:
+        base = {"b": 2, "d": 10, "h": 16, "o": 8}[m.group(1).lower()]
+        return int(m.group(2).replace("_", ""), base)
+    return int(text)
+
+
+def top_parameters(rtl_dir):
+    """The parameter names of strand_top (its header), in order."""
+    path = os.path.join(rtl_dir, "strand_top.v")
+    try:
+        text = open(path).read()
+    except OSError as e:
+        raise Failure(f"cannot read {path}: {e.strerror}")
+    head = text[text.find("module strand_top"):]
+    head = head[:head.find(")(") if ")(" in head else head.find(");")]
+    head = re.sub(r"//[^\n]*", "", head)
+    names = re.findall(r"parameter\s+(?:\[[^\]]*\]\s*)?(?:integer\s+|signed\s+)?(\w+)\s*=", head)
+    if not names:
+        raise Failure(f"{path}: no parameters found in the strand_top header")
+    return names
+
+
+# params.vh lines that belong to one run of a scene, not to the build
+RUN_MACROS = {"FRAMES", "NCONFIG", "CYCLES_PER_FRAME"}
+
+
+class Gen:
+    """One `strand hwgen` export: the scene's build and its formula."""
+
+    def __init__(self, strand, scene_path, out_dir, frames, top_params):
+        os.makedirs(out_dir, exist_ok=True)
+        p = subprocess.run([strand, "hwgen", scene_path, out_dir, "--frames", str(frames)],
+                           capture_output=True, text=True)
+        if p.returncode != 0:
+            raise Failure(f"strand hwgen {scene_path}: " + (p.stderr.strip() or p.stdout.strip() or f"exit {p.returncode}"))
+        self.vh = open(os.path.join(out_dir, "params.vh")).read()
+        self.h = open(os.path.join(out_dir, "params.h")).read()
+        macros = dict(re.findall(r"^`define STRAND_(\w+)\s+(\S+)\s*$", self.vh, re.M))
+        self.params = {n: verilog_int(macros[n]) for n in top_params if n in macros}
+        if "CYCLES_PER_FRAME" not in macros:
+            raise Failure(f"{out_dir}/params.vh: no STRAND_CYCLES_PER_FRAME")
+        self.formula = int(macros["CYCLES_PER_FRAME"])
+
+
+def build_files(gen, params, forcing):
+    """params.vh and params.h of a harness build with these strand_top parameters:
+    hwgen's files without their scene-specific lines (the frames, the setup length,
+    the formula), the parameters set to `params`. With forcing, params.h also makes
+    the harness's cycle model leave out every effect the build leaves out, even when
+    the scene names it: hw_params_of is wrapped so that an EN_* switch that is 0 in
+    the build is 0 for the model too (the harness's own build check then passes),
+    while the register writes and the mouse still follow the scene."""
+    vh = ["// the build of one parameter set; written by scripts/effects.py from strand hwgen's params.vh"]
+    seen = set()
+    for name, value in re.findall(r"^`define STRAND_(\w+)\s+(\S+)\s*$", gen.vh, re.M):
+        if name in RUN_MACROS:
+            continue
+        if name in params:
+            value = ("1'b" if value.startswith("1'b") else "") + str(params[name])
+            seen.add(name)
+        vh.append(f"`define STRAND_{name} {value}")
+    h = ["/* the build params.vh describes; written by scripts/effects.py from strand hwgen's params.h */"]
+    flags = []
+    for name, value in re.findall(r"^#define STRAND_(\w+)\s+(\S+)\s*$", gen.h, re.M):
+        if name in params:
+            value = str(params[name])
+        h.append(f"#define STRAND_{name} {value}")
+        if name.startswith("EN_"):
+            flags.append(name)
+    missing = [n for n in params if n not in seen]
+    if missing:
+        raise Failure("hwgen's params.vh lacks " + ", ".join(missing))
+    if forcing:
+        h += ["#include \"hwgen.h\"",
+              "static inline void effects_hw_params_of(const scene *sc, hw_params *hp)",
+              "{",
+              "    hw_params_of(sc, hp);"]
+        for name in flags:
+            h += [f"#if !STRAND_{name}", f"    hp->{name.lower()} = false;", "#endif"]
+        h += ["}", "#define hw_params_of effects_hw_params_of"]
+    return "\n".join(vh) + "\n", "\n".join(h) + "\n"
+
+
+def pkey(params):
+    return hashlib.sha1(repr(sorted(params.items())).encode()).hexdigest()[:12]
+
+
+# ---- Yosys ----
+
+FLOWS = ["generic", "ice40", "ecp5"]
+# make synth's commands, without the iCE40 netlist for nextpnr (not placed here)
+FLOW_CMDS = {f: [c for c in synth.SYNTH_CMDS[f] if not c.startswith("write_json")] for f in FLOWS}
+
+
+def ys_text(flow, params, gen_dir, srcs):
+    lines = [f"# {flow} flow of {synth.TOP}; written by scripts/effects.py",
+             "read_verilog -I" + os.path.abspath(gen_dir) + " " + " ".join(os.path.abspath(s) for s in srcs),
+             "chparam " + " ".join(f"-set {n} {v}" for n, v in params.items()) + f" {synth.TOP}",
+             f"hierarchy -check -top {synth.TOP}"]
+    return "\n".join(lines + FLOW_CMDS[flow]) + "\n"
+
+
+def run_yosys(flow, params, d, gen_dir, srcs):
+    """One flow on one parameter set unless cached; returns flat cell counts by type."""
+    os.makedirs(d, exist_ok=True)
+    ver = synth.tool_version("yosys")
+    if ver is None:
+        raise Failure("yosys not found (make bootstrap installs it)")
+    ys = ys_text(flow, params, gen_dir, srcs)
+    key = synth.digest(ys, ver, synth.file_digest(list(srcs) + [os.path.join(gen_dir, "strand_regs.vh")]))
+    stamp = os.path.join(d, f"{flow}.ok")
+    if not synth.stamp_fresh(stamp, key):
+        if os.path.exists(stamp):
+            os.remove(stamp)
+        with open(os.path.join(d, f"{flow}.ys"), "w") as f:
+            f.write(ys)
+        log = os.path.join(d, f"{flow}.log")
+        rc, secs, cpu = synth.run_tool(["yosys", "-q", "-l", f"{flow}.log", f"{flow}.ys"], d, os.devnull)
+        if rc != 0:
+            raise Failure(f"yosys {flow}: {synth.yosys_failure(log)} (log: {log})")
+        synth.write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
+    mods = synth.load_stat(os.path.join(d, f"{flow}.stat.json"))
+    return synth.flat_counts(mods, synth.find_top(mods))
+
+
+# ---- the Verilator harness (tb/harness.cpp on tb/sim_top.v, as scripts/build_harness.sh builds it) ----
+
+def verilator_version():
+    try:
+        p = subprocess.run(["verilator", "--version"], capture_output=True, text=True, timeout=60)
+        return p.stdout.strip() or None
+    except (OSError, subprocess.SubprocessError):
+        return None
+
+
+def pkg_flags(kind):
+    p = subprocess.run(["pkg-config", kind, "inih", "cairo"], capture_output=True, text=True)
+    if p.returncode != 0:
+        raise Failure("pkg-config inih cairo failed (make bootstrap installs them)")
+    return p.stdout.strip()
+
+
+def build_harness(d, vh, h, o):
+    """The harness of one build unless cached; returns its path."""
+    os.makedirs(d, exist_ok=True)
+    ver = verilator_version()
+    if ver is None:
+        raise Failure("verilator not found (make bootstrap installs it)")
+    gen = os.path.abspath(o.gen)
+    lib = os.path.abspath(o.lib)
+    ddir = os.path.abspath(d)
+    cflags = f"-O2 -I{ROOT}/model -I{gen} -I{ddir} {pkg_flags('--cflags')}"
+    ldflags = f"{lib} {pkg_flags('--libs')} -lm"
+    cmd = ["verilator", "--cc", "--exe", "--build", "-j", "1", "-O3", "--trace-fst", "--x-assign", "unique",
+           "--x-initial", "unique", "-Mdir", os.path.join(ddir, "obj"), "--top-module", "sim_top",
+           "-o", os.path.join(ddir, "harness"), f"-I{gen}", f"-I{ddir}", f"-I{os.path.abspath(o.rtl_dir)}",
+           "-CFLAGS", cflags, "-LDFLAGS", ldflags, os.path.join(ROOT, "tb/sim_top.v")] \
+        + [os.path.abspath(s) for s in o.srcs] + [os.path.join(ROOT, "tb/harness.cpp")]
+    sources = list(o.srcs) + [os.path.join(ROOT, "tb/sim_top.v"), os.path.join(ROOT, "tb/harness.cpp"), o.lib,
+                              os.path.join(o.gen, "strand_regs.vh"), os.path.join(o.gen, "strand_regs.h")] \
+        + sorted(glob.glob(os.path.join(ROOT, "model/*.h")))
+    try:
+        key = synth.digest(" ".join(cmd), vh, h, ver, synth.file_digest(sources))
+    except OSError as e:
+        raise Failure(f"cannot read {e.filename}: {e.strerror}")
+    stamp = os.path.join(d, "harness.ok")
+    exe = os.path.join(d, "harness")
+    if synth.stamp_fresh(stamp, key) and os.path.exists(exe):
+        return exe
+    if os.path.exists(stamp):
+        os.remove(stamp)
+    with open(os.path.join(d, "params.vh"), "w") as f:
+        f.write(vh)
+    with open(os.path.join(d, "params.h"), "w") as f:
+        f.write(h)
+    log = os.path.join(d, "build.log")
+    rc, secs, cpu = synth.run_tool(cmd, d, log)
+    if rc != 0:
+        errs = [ln for ln in open(log).read().splitlines() if "%Error" in ln or "error:" in ln]
+        raise Failure(f"verilator: {errs[0] if errs else 'build failed'} (log: {log})")
+    synth.write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
+    return exe
+
+
+def run_harness(exe, scene_path, frames, cwd):
+    """Lockstep for `frames` frames: (cycles per frame, output digest). Failure on a
+    mismatch, or when the frames do not all take the same number of cycles."""
+    os.makedirs(cwd, exist_ok=True)
+    p = subprocess.run([os.path.abspath(exe), os.path.abspath(scene_path), "--frames", str(frames)], cwd=cwd,
+                       capture_output=True, text=True, timeout=3600)
+    out = p.stdout + p.stderr
+    if p.returncode != 0:
+        lines = [ln for ln in out.splitlines() if ln.strip()]
+        raise Failure("lockstep failed: " + "; ".join(lines[:3]))
+    m = re.search(r"^\s*cycles per frame\s+(\d+)(.*)$", out, re.M)
+    dg = re.search(r"^\s*output digest\s+(\S+)", out, re.M)
+    if not m or not dg:
+        raise Failure("the harness printed no 'cycles per frame' or 'output digest' line")
+    if m.group(2).strip():
+        raise Failure(f"cycles per frame {m.group(1)}{m.group(2)}")
+    return int(m.group(1)), dg.group(1)
+
+
+# ---- running many jobs ----
+
+class Jobs:
+    """Each distinct job once (by key), up to n at a time; results or Failures by key."""
+
+    def __init__(self, n):
+        self.ex = concurrent.futures.ThreadPoolExecutor(max_workers=n)
+        self.futures = {}
+        self.lock = threading.Lock()
+
+    def submit(self, key, fn, *args):
+        with self.lock:
+            if key not in self.futures:
+                self.futures[key] = self.ex.submit(fn, *args)
+            return self.futures[key]
+
+    def get(self, key):
+        return self.futures[key].result()
+
+    def close(self):
+        self.ex.shutdown(wait=True)
+
+
+def rtl_sources(rtl_dir):
+    srcs = sorted(glob.glob(os.path.join(rtl_dir, "*.v")))
+    if not srcs:
+        raise Failure(f"no Verilog sources in {rtl_dir}")
+    return srcs
+
+
+def sources_digest(srcs):
+    return synth.file_digest([os.path.relpath(s, ROOT) if s.startswith(ROOT) else s for s in srcs])
+
+
+# ---- the gating test ----
+
+def cmd_test(o):
+    rows = [r for r in EFFECTS if not o.effect or r["name"] in o.effect]
+    top = top_parameters(o.rtl_dir)
+    base = os.path.join(o.build, "test")
+    jobs = Jobs(o.jobs)
+    t0 = time.time()
+    plans = []
+    try:
+        # scenes and their parameters first (quick), then every Yosys run and harness build at once
+        for r in rows:
+            s_sec, b_sec = scenes_of(r, TEST_BUILD)
+            d = os.path.join(base, "scenes", r["name"])
+            os.makedirs(d, exist_ok=True)
+            paths = {}
+            for tag, secs in (("S", s_sec), ("b", b_sec)):
+                paths[tag] = os.path.join(d, f"{tag}.scene")
+                with open(paths[tag], "w") as f:
+                    f.write(scene_text(f"effects_{r['name']}_{tag}", secs, o.frames))
+            plan = dict(row=r, paths=paths, problems=[])
+            try:
+                gS = Gen(o.strand, paths["S"], os.path.join(d, "S.gen"), o.frames, top)
+                gB = Gen(o.strand, paths["b"], os.path.join(d, "b.gen"), o.frames, top)
+            except Failure as e:
+                plan["problems"].append(str(e))
+                plans.append(plan)
+                continue
+            for p, v in r["params"].items():
+                if gS.params.get(p) != v:
+                    plan["problems"].append(f"the table says S sets {p}={v}, hwgen derives {p}={gS.params.get(p)}")
+            enable = enable_params(r)
+            for p in enable:
+                if gB.params.get(p) != 0:
+                    plan["problems"].append(f"without the effect's lines hwgen still derives {p}={gB.params.get(p)}")
+            pA = dict(gS.params)
+            for p in enable:
+                pA[p] = 0
+            plan.update(gS=gS, gB=gB, pA=pA, enable=enable)
+            plans.append(plan)
+        # the harness builds take longest: they go first
+        for plan in plans:
+            if "gS" not in plan:
+                continue
+            for tag, params, gen in (("a", plan["pA"], plan["gS"]), ("b", plan["gB"].params, plan["gB"])):
+                vh, h = build_files(gen, params, forcing=True)
+                k = hashlib.sha1((vh + h).encode()).hexdigest()[:12]
+                plan[f"harness_{tag}"] = k
+                jobs.submit(("harness", k), build_harness, os.path.join(base, "vl_" + k), vh, h, o)
+        for plan in plans:
+            if "gS" not in plan:
+                continue
+            for params in (plan["pA"], plan["gB"].params, plan["gS"].params):
+                k = pkey(params)
+                jobs.submit(("yosys", k), run_yosys, "generic", params, os.path.join(base, "p_" + k), o.gen, o.srcs)
+
+        failed = 0
+        for plan in plans:
+            r = plan["row"]
+            why = list(plan["problems"])
+            detail = {}
+            if "gS" in plan:
+                try:
+                    ca = jobs.get(("yosys", pkey(plan["pA"])))
+                    cb = jobs.get(("yosys", pkey(plan["gB"].params)))
+                    cs = jobs.get(("yosys", pkey(plan["gS"].params)))
+                    ta, tb_, ts = sum(ca.values()), sum(cb.values()), sum(cs.values())
+                    detail.update(ta=ta, tb=tb_, ts=ts, types=len(cb))
+                    if ca != cb:
+                        diff = sorted(t for t in set(ca) | set(cb) if ca.get(t, 0) != cb.get(t, 0))
+                        why.append(f"generic cells (a) {ta} != (b) {tb_}; types that differ: "
+                                   + ", ".join(f"{t} {ca.get(t, 0)}/{cb.get(t, 0)}" for t in diff[:6]))
+                    if not ts > tb_:
+                        why.append(f"with the effect on: {ts} generic cells, not more than the {tb_} without it")
+                except Failure as e:
+                    why.append(str(e))
+                try:
+                    ea = jobs.get(("harness", plan["harness_a"]))
+                    eb = jobs.get(("harness", plan["harness_b"]))
+                    rd = os.path.join(base, "runs", r["name"])
+                    cyc_a, dig_a = run_harness(ea, plan["paths"]["S"], o.frames, os.path.join(rd, "a"))
+                    cyc_b, dig_b = run_harness(eb, plan["paths"]["b"], o.frames, os.path.join(rd, "b"))
+                    detail.update(cyc_a=cyc_a, cyc_b=cyc_b, same_out=dig_a == dig_b)
+                    if cyc_a != cyc_b:
+                        why.append(f"cycles per frame (a) {cyc_a} != (b) {cyc_b}")
+                    if cyc_b != plan["gB"].formula:
+                        why.append(f"(b) measured {cyc_b} cycles per frame, hw_cycles_per_frame says {plan['gB'].formula}")
+                    if dig_a != dig_b:
+                        why.append(f"the outputs differ: (a) digest {dig_a}, (b) {dig_b} (X's registers or inputs leak)")
+                except Failure as e:
+                    why.append(str(e))
+            name = r["name"]
+            en = ", ".join(f"{p}=0" for p in plan.get("enable", []))
+            if why:
+                failed += 1
+                print(f"FAIL effects {name}: " + "; ".join(why))
+            else:
+                same_params = plan["pA"] == plan["gB"].params
+                print(f"PASS effects {name}: S with {en} = S without it: {detail['ta']} generic cells, all "
+                      f"{detail['types']} types alike{' (the same parameters)' if same_params else ''}; "
+                      f"{detail['cyc_a']} cycles per frame alike (= formula); outputs alike in every cycle; "
+                      f"the effect on costs {detail['ts'] - detail['tb']} cells")
+    finally:
+        jobs.close()
+    print(f"effects test: {len(plans) - failed} passed, {failed} failed in {time.time() - t0:.0f} s "
+          f"(RTL {o.rtl_dir}, {o.frames} frames each)")
+    return 1 if failed else 0
+
+
+# ---- the document ----
+
+def fmt(n):
+    return f"{n:,}"
+
+
+def signed(n):
+    return "0" if n == 0 else f"{'+' if n > 0 else '-'}{abs(n):,}"
+
+
+def figures(counts):
+    """The figures the document reports, from the three flows' cell counts."""
+    g, i, e = counts["generic"], counts["ice40"], counts["ecp5"]
+    pick = synth.pick
+    return {
+        "cells": sum(g.values()),
+        "gen_ff": synth.generic_classes(g)["ff"],
+        "ice_lut": pick(i, lambda t: t == "SB_LUT4"),
+        "ice_ff": pick(i, lambda t: t.startswith("SB_DFF")),
+        "ice_carry": pick(i, lambda t: t == "SB_CARRY"),
+        "ice_ram": pick(i, lambda t: t.startswith("SB_RAM40_4K")),
+        "ice_dsp": pick(i, lambda t: t == "SB_MAC16"),
+        "ecp_lut": pick(e, lambda t: t == "LUT4"),
+        "ecp_mux": pick(e, lambda t: t in ("PFUMX", "L6MUX21")),
+        "ecp_ff": pick(e, lambda t: t == "TRELLIS_FF"),
+        "ecp_carry": pick(e, lambda t: t == "CCU2C"),
+        "ecp_dsp": pick(e, lambda t: t == "MULT18X18D"),
+        "ecp_ram": pick(e, lambda t: t == "DP16KD"),
+    }
+
+
+def git_note(rtl_dir):
+    """'as committed in <hash>' when the RTL directory is the repository's and clean."""
+    try:
+        if os.path.realpath(rtl_dir) != os.path.realpath(os.path.join(ROOT, "rtl")):
+            return ""
+        st = subprocess.run(["git", "status", "--porcelain", "--", "rtl"], cwd=ROOT, capture_output=True, text=True)
+        if st.returncode != 0 or st.stdout.strip():
+            return " (uncommitted changes in rtl/)" if st.returncode == 0 else ""
+        h = subprocess.run(["git", "log", "-1", "--format=%h", "--", "rtl"], cwd=ROOT, capture_output=True, text=True)
+        return f" (rtl/ as of commit {h.stdout.strip()})" if h.returncode == 0 and h.stdout.strip() else ""
+    except OSError:
+        return ""
+
+
+def cmd_doc(o):
+    top = top_parameters(o.rtl_dir)
+    body_name, body = doc_body()
+    base = os.path.join(o.build, "doc")
+    jobs = Jobs(o.jobs)
+    t0 = time.time()
+    rows = [dict(name="baseline", title="baseline: the body, no effect", scene={}, params={})] + EFFECTS
+    built = {}  # scene text -> (path, Gen)
+
+    def export(tag, secs):
+        text = scene_text(f"effects_{tag}", secs, o.frames)
+        if text not in built:
+            d = os.path.join(base, "scenes")
+            os.makedirs(d, exist_ok=True)
+            path = os.path.join(d, f"{tag}.scene")
+            with open(path, "w") as f:
+                f.write(text)
+            g = Gen(o.strand, path, os.path.join(d, f"{tag}.gen"), o.frames, top)
+            for n, v in body.items():
+                if g.params.get(n) != v:
+                    raise Failure(f"{path}: hwgen derives {n}={g.params.get(n)}, the body has {n}={v}")
+            built[text] = (path, g)
+        return built[text]
+
+    try:
+        for r in rows:
+            s_sec, b_sec = scenes_of(r, body)
+            r["S"] = export(r["name"], s_sec)
+            r["B"] = export(r["name"] + "_without", b_sec) if r["scene"] else r["S"]
+            for p, v in r["params"].items():
+                if r["S"][1].params.get(p) != v:
+                    raise Failure(f"{r['name']}: the table says the scene sets {p}={v}, hwgen derives {p}={r['S'][1].params.get(p)}")
+        # every build: three flows and a harness each; the slowest first
+        todo = {}
+        for path, g in built.values():
+            todo.setdefault(pkey(g.params), (path, g))  # named after its first scene
+        for k, (path, g) in todo.items():
+            d = os.path.join(base, "p_" + k)
+            vh, h = build_files(g, g.params, forcing=False)
+            jobs.submit(("harness", k), build_harness, os.path.join(d, "vl"), vh, h, o)
+        for flow in ["ice40", "ecp5", "generic"]:
+            for k, (path, g) in todo.items():
+                jobs.submit((flow, k), run_yosys, flow, g.params, os.path.join(base, "p_" + k), o.gen, o.srcs)
+        res = {}
+        errors = []
+        for k, (path, g) in todo.items():
+            try:
+                counts = {f: jobs.get((f, k)) for f in FLOWS}
+                exe = jobs.get(("harness", k))
+                cyc, _ = run_harness(exe, path, o.frames, os.path.join(base, "p_" + k, "run"))
+                if cyc != g.formula:
+                    raise Failure(f"{path}: the RTL measured {cyc} cycles per frame, hw_cycles_per_frame "
+                                  f"(model/hwgen.c) says {g.formula}")
+                fig = figures(counts)
+                fig.update(cycles=cyc, formula=g.formula)
+                res[k] = fig
+                print(f"effects {os.path.basename(path)[:-6]:18s} {fig['cells']:7d} generic cells, "
+                      f"{cyc} cycles per frame (measured = formula)", flush=True)
+            except Failure as e:
+                errors.append(str(e))
+        if errors:
+            for e in errors:
+                print(f"FAIL effects: {e}", file=sys.stderr)
+            print(f"FAIL effects: {o.out} not written", file=sys.stderr)
+            return 1
+    finally:
+        jobs.close()
+    write_doc(o, rows, res, body_name, body)
+    print(f"effects: wrote {o.out} in {time.time() - t0:.0f} s")
+    return 0
+
+
+def over(r):
+    """What a row's cost is measured over."""
+    parts = [] if not r.get("body") else ["its own body (" + ", ".join(f"[{s}]" for s in r["body"]) + ")"]
+    parts += [f"[{s}]" for s in r.get("context", {})]
+    return "the baseline" + (" with " + " and ".join(parts) if parts else "")
+
+
+def write_doc(o, rows, res, body_name, body):
+    def fig(row, which):
+        return res[pkey(row[which][1].params)]
+
+    base = fig(rows[0], "S")
+    L = []
+    w = L.append
+    yver = synth.tool_version("yosys")
+    vver = verilator_version()
+    srcs = [os.path.relpath(os.path.abspath(s), ROOT) for s in o.srcs]
+    w("# What each effect costs")
+    w("")
+    w("Generated by `make effects` (scripts/effects.py); do not edit by hand. Tools: "
+      f"{yver}; {vver}. RTL: {', '.join(f'`{s}`' for s in srcs)}, sha256 "
+      f"`{sources_digest(o.srcs)[:16]}`{git_note(o.rtl_dir)}.")
+    w("")
+    w("Every effect of `strand_top` sits behind a `generate` switch, so a scene pays only for the "
+      "effects it names (design.md section 3). This is each effect's price in cells and in cycles per frame, "
+      f"measured on one body: the {body_name} of [resources.md](resources.md), "
+      + ", ".join(f"{n}={v}" for n, v in body.items())
+      + f" ({body['M'] * body['K']} nodes), with no effect (the baseline) and with each effect.")
+    w("")
+    w("## Cost of each effect")
+    w("")
+    w("Each figure is the build with the effect minus the build without it (the baseline, or the baseline "
+      "with what the effect needs to act, as the third column says); the baseline row gives absolute values.")
+    w("")
+    keys = ["cells", "ice_lut", "ice_ff", "ecp_lut", "ecp_ff", "ecp_dsp", "cycles"]
+    w("| effect | parameters it sets | measured over | generic cells | iCE40 LUT4 | iCE40 DFF | ECP5 LUT4 | ECP5 FF "
+      "| ECP5 MULT18X18D | cycles per frame |")
+    w("|---|---|---|--:|--:|--:|--:|--:|--:|--:|")
+    w(f"| {rows[0]['title']} | "
+      + ", ".join(f"{n}={v}" for n, v in rows[0]["S"][1].params.items() if n.startswith("EN_") or n == "RULE")
+      + " | (absolute) | " + " | ".join(fmt(base[k]) for k in keys) + " |")
+    for r in rows[1:]:
+        s, b = fig(r, "S"), fig(r, "B")
+        w(f"| {r['title']} | {', '.join(f'{n}={v}' for n, v in r['params'].items())} | {over(r)} | "
+          + " | ".join(signed(s[k] - b[k]) for k in keys) + " |")
+    w("")
+    free = [r["title"] for r in rows[1:] if fig(r, "S")["cycles"] == fig(r, "B")["cycles"]]
+    costly = [f"{r['title']} {signed(fig(r, 'S')['cycles'] - fig(r, 'B')['cycles'])}" for r in rows[1:]
+              if fig(r, "S")["cycles"] != fig(r, "B")["cycles"]]
+    w("Cycles per frame: " + (", ".join(free) + " add none" if free else "every effect adds some")
+      + ("; " + ", ".join(costly) if costly else "") + ".")
+    w("")
+    cols = {"cells": "generic cells", "ice_lut": "iCE40 LUT4", "ice_ff": "iCE40 DFF", "ecp_lut": "ECP5 LUT4",
+            "ecp_ff": "ECP5 FF", "ecp_dsp": "ECP5 MULT18X18D"}
+    neg = [f"{r['title']}: {cols[k]} {signed(fig(r, 'S')[k] - fig(r, 'B')[k])}" for r in rows[1:] for k in cols
+           if fig(r, "S")[k] < fig(r, "B")[k]]
+    if neg:
+        w("A negative figure (" + "; ".join(neg) + ") is no saving: each build is synthesised on its own, and "
+          "the mapper's result for the rest of the design differs between the two builds (compare the rows "
+          "of the table below), so the figures of one family are not additive.")
+        w("")
+    w("## Every build, absolute")
+    w("")
+    w("| build | generic cells | of which flip-flops | iCE40 SB_LUT4 | DFF | SB_CARRY | SB_MAC16 | SB_RAM40_4K "
+      "| ECP5 LUT4 | PFUMX + L6MUX21 | TRELLIS_FF | CCU2C | MULT18X18D | DP16KD | cycles per frame, measured | formula |")
+    w("|---|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
+    listed = set()
+    builds = [(r["title"], r["S"]) for r in rows] + [(f"{r['title']}: without it", r["B"]) for r in rows]
+    for title, (path, g) in builds:
+        k = pkey(g.params)
+        if k in listed:
+            continue
+        listed.add(k)
+        f_ = res[k]
+        w(f"| {title} | " + " | ".join(fmt(f_[c]) for c in
+                                       ["cells", "gen_ff", "ice_lut", "ice_ff", "ice_carry", "ice_dsp", "ice_ram",
+                                        "ecp_lut", "ecp_mux", "ecp_ff", "ecp_carry", "ecp_dsp", "ecp_ram", "cycles",
+                                        "formula"]) + " |")
+    w("")
+    w("## How it was measured")
+    w("")
+    w("For each row, scripts/effects.py writes a scene: the body below plus the effect's lines (the baseline "
+      "has none), and runs `strand hwgen` on it, which derives the `strand_top` parameters exactly as "
+      "`make sim` does. The script checks that they are the body's and that the effect sets the parameters "
+      "the table names. Then, on those parameters:")
+    w("")
+    w("- Yosys, as `make synth` runs it ([resources.md](resources.md)): `synth -top strand_top` and `stat` "
+      "(generic cells, summed over the module hierarchy; `check -assert`, no latches), `synth_ice40 -dsp` "
+      "(SB_LUT4, DFF = every SB_DFF* kind, SB_CARRY, SB_MAC16, SB_RAM40_4K) and `synth_ecp5` (LUT4, the "
+      "PFUMX and L6MUX21 muxes, TRELLIS_FF, CCU2C, MULT18X18D, DP16KD); no place and route.")
+    w(f"- Cycles per frame: the `make sim` harness (tb/harness.cpp: the RTL under Verilator in lockstep with "
+      f"the cycle model, every output in every cycle) runs the scene for {o.frames} frames and reports the "
+      "cycles from `step` to `frame_done`, which must be the same in every frame. The script fails unless "
+      "that equals `hw_cycles_per_frame()` (model/hwgen.c, the formula of [architecture.md](architecture.md)), "
+      "which `strand hwgen` exports; both columns above are printed from the run.")
+    w("")
+    w("The body (its run-time values change no cell and no cycle; the lockstep runs use them):")
+    w("")
+    w("```ini")
+    w(open(rows[0]["S"][0]).read().rstrip())
+    w("```")
+    w("")
+    w("Each effect adds these lines (and the lines of the third column, in both builds):")
+    w("")
+    w("| effect | scene lines | with | parameters |")
+    w("|---|---|---|---|")
+
+    def show(secs):
+        return "; ".join(f"`[{sec}]` " + ", ".join(f"`{ln}`" for ln in ls) for sec, ls in secs.items()) or "-"
+
+    for r in rows[1:]:
+        w(f"| {r['title']} | {show(r['scene'])} | {show(dict(r.get('body', {}), **r.get('context', {})))} "
+          f"| {', '.join(f'{n}={v}' for n, v in r['params'].items())} |")
+    w("")
+    w("## The check that a switched-off effect costs nothing")
+    w("")
+    w("`make test-effects` (part of `make test`) builds, for each effect, on a small body (generic Yosys "
+      "only): (a) a scene that names the effect, with the effect's enable switch forced to 0 and every other "
+      "parameter as hwgen derives it, the harness still writing the effect's registers and driving its "
+      "inputs; (b) the same scene without the effect's lines. (a) and (b) must have the same generic cells, "
+      "type by type, the same measured cycles per frame and the same outputs in every cycle (both in "
+      "lockstep with the cycle model, which is told the effect is off); the scene with the effect on must "
+      "cost more cells than (b). `scripts/effects.py test --rtl-dir DIR` runs the same check on a copy of "
+      "the RTL.")
+    w("")
+    w("Regenerate with `make effects` (results are cached in `build/effects/` by the contents of the RTL, "
+      "the headers and the parameters; a rerun on unchanged sources only writes this file).")
+    text = "\n".join(L) + "\n"
+    tmp = o.out + ".tmp"
+    with open(tmp, "w") as f:
+        f.write(text)
+    os.replace(tmp, o.out)
+
+
+# ---- command line ----
+
+def cmd_list():
+    for r in EFFECTS:
+        lines = "; ".join(f"[{sec}] " + ", ".join(ls) for sec, ls in r["scene"].items())
+        print(f"{r['name']:10s} {' '.join(f'{n}={v}' for n, v in r['params'].items()):28s} {lines}")
+    return 0
+
+
+def main():
+    p = argparse.ArgumentParser(description=__doc__.splitlines()[0],
+                                epilog="See the top of scripts/effects.py for details.")
+    sub = p.add_subparsers(dest="cmd", required=True)
+    for name in ("doc", "test"):
+        s = sub.add_parser(name)
+        s.add_argument("--rtl-dir", default="rtl", help="the RTL to measure: every DIR/*.v (default rtl)")
+        s.add_argument("--build", default="build/effects", help="cache and work directory")
+        s.add_argument("--gen", default="build/gen", help="directory of strand_regs.vh and strand_regs.h")
+        s.add_argument("--strand", default="build/strand", help="the strand CLI (for hwgen)")
+        s.add_argument("--lib", default="build/libstrand.a", help="the model library the harness links")
+        s.add_argument("--jobs", type=int, default=2)
+        s.add_argument("--frames", type=int, default=3 if name == "doc" else 6, help="frames each lockstep run")
+        if name == "doc":
+            s.add_argument("--out", default="docs/effects.md")
+        else:
+            s.add_argument("--effect", action="append", default=[], metavar="NAME",
+                           help="only this effect (repeatable); names: " + ", ".join(r["name"] for r in EFFECTS))
+    sub.add_parser("list")
+    o = p.parse_args()
+    if o.cmd == "list":
+        return cmd_list()
+    if o.jobs < 1:
+        p.error("--jobs must be at least 1")
+    if o.frames < 1:
+        p.error("--frames must be at least 1")
+    if not os.path.isdir(o.rtl_dir):
+        p.error(f"--rtl-dir {o.rtl_dir}: not a directory")
+    if not os.path.isfile(os.path.join(o.rtl_dir, "strand_top.v")):
+        p.error(f"--rtl-dir {o.rtl_dir}: no strand_top.v in it")
+    for what, path in (("--strand", o.strand), ("--lib", o.lib), ("--gen", os.path.join(o.gen, "strand_regs.vh"))):
+        if not os.path.exists(path):
+            p.error(f"{what}: {path} does not exist (make model builds it)")
+    if o.cmd == "doc" and not os.path.isdir(os.path.dirname(os.path.abspath(o.out))):
+        p.error(f"--out {o.out}: its directory does not exist")
+    if o.cmd == "test":
+        bad = [n for n in o.effect if n not in {r["name"] for r in EFFECTS}]
+        if bad:
+            p.error(f"--effect {bad[0]}: no such effect (names: {', '.join(r['name'] for r in EFFECTS)})")
+    o.strand = os.path.abspath(o.strand)
+    try:
+        o.srcs = rtl_sources(o.rtl_dir)
+        return cmd_doc(o) if o.cmd == "doc" else cmd_test(o)
+    except Failure as e:
+        print(f"FAIL effects: {e}", file=sys.stderr)
+        return 1
+
+
+if __name__ == "__main__":
+    sys.exit(main())
