@@ -31,7 +31,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     /* A chain with the build's effects; every value 0, as after reset. */
     scene *sc = &c->sc;
     snprintf(sc->name, sizeof sc->name, "rtl");
-    sc->dim = 2;
+    sc->dim = hp->dim;
     sc->number = NUMBER_FIXED;
     sc->fmt = (fx_format){hp->w, hp->f, hp->sqrt_bits, hp->div_bits};
     sc->dt = 1;
@@ -53,9 +53,17 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->en_ground = hp->en_ground;
     sc->ground_axis = hp->ground_axis;
     sc->ground_sign = hp->ground_above ? 1 : -1;
+    /* A graph's edge memories: rods, then springs, each filled by EDGE writes (reset: all 0). */
+    if (hp->graph) {
+        sc->n_edges = hp->e_rods + hp->e_springs;
+        sc->edges = calloc((size_t)sc->n_edges, sizeof *sc->edges);
+        if (!sc->edges) return false;
+        for (int e = 0; e < sc->n_edges; e++) sc->edges[e].kind = e < hp->e_rods ? EDGE_ROD : EDGE_SPRING;
+        c->spring0 = hp->e_rods;
+    }
     /* The links the pair sequencers walk, as the scene reader lays a chain's edges out:
        rods (walked by the pairwise rule), then springs; every rest length comes from DIST. */
-    if (n > 1 && (hp->en_constraints || hp->en_springs)) {
+    else if (n > 1 && (hp->en_constraints || hp->en_springs)) {
         int links = n - 1, e = 0;
         sc->n_edges = links * ((hp->en_constraints ? 1 : 0) + (hp->en_springs ? 1 : 0));
         sc->edges = calloc((size_t)sc->n_edges, sizeof *sc->edges);
@@ -91,6 +99,7 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     o->frame_done = c->frame_done;
     o->rd_x = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_x[c->rd_u_q]) : 0;
     o->rd_y = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_y[c->rd_u_q]) : 0;
+    o->rd_z = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_z[c->rd_u_q]) : 0;
     o->phase = c->phase;
     o->fv = c->done;
     o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == m * c->hp.k - (c->hp.rule ? 1 : 0);
@@ -114,6 +123,7 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
         o->wb_idx[u] = c->wb_idx[u];
         o->wb_x[u] = to_word(f, c->wb_x[u]);
         o->wb_y[u] = to_word(f, c->wb_y[u]);
+        o->wb_z[u] = to_word(f, c->wb_z[u]);
     }
 }
 
@@ -130,7 +140,7 @@ static void reset_all(cyc_model *c)
     for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
     for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
     c->s.ks = c->s.kd = c->s.ground = c->s.friction = 0;
-    c->prev_off[0] = c->prev_off[1] = 0;
+    memset(c->prev_off, 0, sizeof c->prev_off);
     c->ground_pass = false;
     memset(&c->pair, 0, sizeof c->pair);   /* PQ_IDLE, counters 0 */
     memset(&c->force, 0, sizeof c->force);
@@ -138,18 +148,28 @@ static void reset_all(cyc_model *c)
     c->phase = PH_IDLE;
     c->substep = 0;
     c->frame_done = false;
-    c->mouse_q[0] = c->mouse_q[1] = 0;
+    memset(c->mouse_q, 0, sizeof c->mouse_q);
     c->mouse_down_q = false;
     c->init_u = c->init_n = c->init_count = 0;
-    c->init_pos[0] = c->init_pos[1] = 0;
-    c->start[0] = c->start[1] = c->step[0] = c->step[1] = 0;
+    memset(c->init_pos, 0, sizeof c->init_pos);
+    memset(c->start, 0, sizeof c->start);
+    memset(c->step, 0, sizeof c->step);
+    memset(c->load, 0, sizeof c->load);
+    c->edge_rest = 0;
+    if (c->hp.graph) { /* the edge memories are emptied */
+        for (int e = 0; e < c->sc.n_edges; e++) {
+            c->sc.edges[e].a = c->sc.edges[e].b = 0;
+            c->s.rest[e] = 0;
+        }
+        c->fill[0] = c->fill[1] = 0;
+    }
     c->running = c->done = false;
     c->vidx = 0;
     for (int u = 0; u < c->hp.m; u++) {
-        c->b_x[u] = c->b_y[u] = 0;
+        c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
         c->wb_valid[u] = false;
         c->wb_idx[u] = 0;
-        c->wb_x[u] = c->wb_y[u] = 0;
+        c->wb_x[u] = c->wb_y[u] = c->wb_z[u] = 0;
     }
     c->sq_state = SQ_IDLE;
     c->sq_iter = c->sq_timer = 0;
@@ -164,6 +184,32 @@ static void lane_write(cyc_model *c, bool *written, int u, int idx, int node)
     c->wb_idx[u] = (uint32_t)idx;
     c->wb_x[u] = c->s.pos[node][0];
     c->wb_y[u] = c->s.pos[node][1];
+    c->wb_z[u] = c->s.pos[node][2];
+}
+
+/* A node index from a {unit, node} address (the address decoders of strand_top), or -1. */
+static int node_of(const cyc_model *c, uint32_t addr)
+{
+    const hw_params *hp = &c->hp;
+    uint32_t u = addr >> hp->iw & ((1u << hp->uw) - 1), nn = addr & ((1u << hp->iw) - 1);
+    if (u >= (uint32_t)hp->m || nn >= (uint32_t)hp->k) return -1;
+    return (int)(u * (uint32_t)hp->k + nn);
+}
+
+/* strand_top's EDGE register: append {spring, b, a} to the spring or the rod memory. */
+static void edge_write(cyc_model *c, uint32_t data)
+{
+    const hw_params *hp = &c->hp;
+    const int aw = hp->uw + hp->iw, bit = 2 * aw < hp->w ? 2 * aw : hp->w - 1;
+    const int spring = (int)(data >> bit & 1u), size = spring ? hp->e_springs : hp->e_rods;
+    if (!hp->graph || c->fill[spring] >= size) return;
+    int e = (spring ? c->spring0 : 0) + c->fill[spring]++;
+    /* hwgen writes valid addresses only; an edge to a node that does not exist is not
+       supported (the RTL would read no node there); here it is taken as node 0 */
+    int a = node_of(c, data & ((1u << aw) - 1)), b = node_of(c, data >> aw & ((1u << aw) - 1));
+    c->sc.edges[e].a = a < 0 ? 0 : a;
+    c->sc.edges[e].b = b < 0 ? 0 : b;
+    c->s.rest[e] = c->edge_rest;
 }
 
 /*
@@ -176,12 +222,17 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
 {
     const hw_params *hp = &c->hp;
     const int k = hp->k, n = hp->m * k, iter = spring ? 1 : hp->iter;
-    const int links = n - 1;
+    const int links = hp->graph ? (spring ? hp->e_springs : hp->e_rods) : n - 1;
     const bool last_link = q->counter == (links > 0 ? links - 1 : 0);
     const bool last_iter = q->iter == iter - 1;
-    const int a = q->uidx * k + q->nidx, b = a + 1;
+    /* this link: edge `counter` of the memory (the chain's links are edges (i, i+1) of sc) */
+    const int base = spring ? c->spring0 : 0;
+    const int e = base + (q->counter < links ? q->counter : 0);
+    const int a = links > 0 ? c->sc.edges[e].a : 0, b = links > 0 ? c->sc.edges[e].b : 0;
+    const int first_a = hp->graph && links > 0 ? c->sc.edges[base].a : 0;
+    const int next_a = links > 0 ? c->sc.edges[base + (q->counter + 1 < links ? q->counter + 1 : 0)].a : 0;
     if (q->state == PQ_WR_A && spring) {
-        sim_fx_spring_edge(&c->s, c->spring0 + a); /* a's force now, b's next cycle: nothing reads between */
+        sim_fx_spring_edge(&c->s, e); /* a's force now, b's next cycle: nothing reads between */
     } else if (q->state == PQ_WR_A) { /* pair_edge() now; b's half is written next cycle */
         bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
         q->write_b = false;
@@ -189,11 +240,11 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
             long skipped = c->s.skipped;
             fx_t b_old[3];
             memcpy(b_old, c->s.pos[b], sizeof b_old);
-            sim_fx_pair_edge(&c->s, a);
+            sim_fx_pair_edge(&c->s, e);
             bool valid = c->s.skipped == skipped;
             memcpy(q->b_new, c->s.pos[b], sizeof q->b_new);
             memcpy(c->s.pos[b], b_old, sizeof b_old);
-            if (valid && !fa) lane_write(c, written, q->uidx, q->nidx, a);
+            if (valid && !fa) lane_write(c, written, a / k, a % k, a);
             q->write_b = valid && !fb;
         }
     } else if (q->state == PQ_WR_B && q->write_b) {
@@ -207,8 +258,10 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
     case PQ_IDLE:
         if (start) {
             q->iter = 0;
-            q->uidx = q->nidx = q->counter = 0;
-            if (n < 2) q->done = true;
+            q->uidx = first_a / k;
+            q->nidx = first_a % k;
+            q->counter = 0;
+            if (links < 1) q->done = true;
             else next = PQ_RD_A;
         }
         break;
@@ -233,17 +286,14 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
                 next = PQ_IDLE;
             } else {
                 q->iter++;
-                q->uidx = q->nidx = 0;
+                q->uidx = first_a / k;
+                q->nidx = first_a % k;
                 next = PQ_RD_A;
             }
         } else {
             q->counter++;
-            if (q->nidx == k - 1) {
-                q->nidx = 0;
-                q->uidx++;
-            } else {
-                q->nidx++;
-            }
+            q->uidx = next_a / k;
+            q->nidx = next_a % k;
             next = PQ_RD_A;
         }
         break;
@@ -286,17 +336,29 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         bool ok = rd_n < (uint32_t)k;
         c->b_x[u] = ok ? c->s.pos[u * k + (int)rd_n][0] : 0;
         c->b_y[u] = ok ? c->s.pos[u * k + (int)rd_n][1] : 0;
+        c->b_z[u] = ok ? c->s.pos[u * k + (int)rd_n][2] : 0;
     }
 
     /* Storage writes. The init walk (strand_top PH_INIT): node (init_u, init_n) at rest. */
     if (c->phase == PH_INIT) {
         int node = c->init_u * k + c->init_n;
-        for (int a = 0; a < 2; a++) {
+        for (int a = 0; a < hp->dim; a++) {
             c->s.pos[node][a] = c->init_pos[a];
             /* node_unit: a pinned node starts at rest, a free one PREV away */
             c->s.prev[node][a] = c->sc.pinned[node] ? c->init_pos[a] : fx_add(f, c->init_pos[a], c->prev_off[a]);
         }
         lane_write(c, written, c->init_u, c->init_n, node);
+    }
+    /* A NODE write (strand_top, idle only): the node takes LOAD; a pinned one at rest. */
+    if (in->cfg_we && in->cfg_addr == STRAND_REG_NODE && c->phase == PH_IDLE) {
+        int node = node_of(c, in->cfg_data);
+        if (node >= 0) {
+            for (int a = 0; a < hp->dim; a++) {
+                c->s.pos[node][a] = c->load[0][a];
+                c->s.prev[node][a] = c->sc.pinned[node] ? c->load[0][a] : c->load[1][a];
+            }
+            lane_write(c, written, node / k, node % k, node);
+        }
     }
     /* The Verlet pass (node_unit, running): node vidx of every unit. */
     if (c->running && !verlet_start && c->ground_pass) {
@@ -307,8 +369,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     } else if (c->running && !verlet_start) {
         for (int u = 0; u < m; u++) {
             int node = u * k + c->vidx;
-            c->s.mouse[0] = c->mouse_q[0];
-            c->s.mouse[1] = c->mouse_q[1];
+            for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;
             if (sim_fx_verlet_node(&c->s, node)) {
                 if (hp->en_mouse) sim_fx_mouse_node(&c->s, node);
@@ -401,19 +462,20 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         if (cmd_init) {
             c->phase = PH_INIT;
             c->init_u = c->init_n = c->init_count = 0;
-            c->init_pos[0] = c->start[0];
-            c->init_pos[1] = c->start[1];
+            for (int a = 0; a < 3; a++) c->init_pos[a] = a < hp->dim ? c->start[a] : 0;
         } else if (in->step) {
             c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
             c->substep = 0;
             c->mouse_q[0] = from_word(f, in->mouse_x);
             c->mouse_q[1] = from_word(f, in->mouse_y);
+            c->mouse_q[2] = hp->dim == 3 ? from_word(f, in->mouse_z) : 0;
             c->mouse_down_q = in->mouse_down;
         }
         break;
     case PH_INIT:
         c->init_pos[0] = fx_add(f, c->init_pos[0], c->step[0]);
         c->init_pos[1] = fx_add(f, c->init_pos[1], c->step[1]);
+        c->init_pos[2] = fx_add(f, c->init_pos[2], c->step[2]);
         if (c->init_n == k - 1) {
             c->init_n = 0;
             c->init_u++;
@@ -463,6 +525,19 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         case STRAND_REG_PREV_Y: c->prev_off[1] = v; break;
         case STRAND_REG_START_X: c->start[0] = v; break;
         case STRAND_REG_START_Y: c->start[1] = v; break;
+        case STRAND_REG_START_Z: c->start[2] = v; break;
+        case STRAND_REG_STEP_Z: c->step[2] = v; break;
+        case STRAND_REG_PREV_Z: c->prev_off[2] = v; break;
+        case STRAND_REG_GDT2_Z: c->s.gravity[2] = v; break;
+        case STRAND_REG_BOX_Z: c->s.box[2] = v; break;
+        case STRAND_REG_LOAD_X: c->load[0][0] = v; break;
+        case STRAND_REG_LOAD_Y: c->load[0][1] = v; break;
+        case STRAND_REG_LOAD_Z: c->load[0][2] = v; break;
+        case STRAND_REG_LOAD_PX: c->load[1][0] = v; break;
+        case STRAND_REG_LOAD_PY: c->load[1][1] = v; break;
+        case STRAND_REG_LOAD_PZ: c->load[1][2] = v; break;
+        case STRAND_REG_EDGE_REST: c->edge_rest = v; break;
+        case STRAND_REG_EDGE: edge_write(c, in->cfg_data); break;
         case STRAND_REG_STEP_X: c->step[0] = v; break;
         case STRAND_REG_STEP_Y: c->step[1] = v; break;
         case STRAND_REG_PIN: {

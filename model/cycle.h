@@ -32,7 +32,7 @@ enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };           
 /* The inputs of strand_top during one cycle (all W-bit words raw). */
 typedef struct {
     bool reset;
-    uint32_t mouse_x, mouse_y;
+    uint32_t mouse_x, mouse_y, mouse_z;
     bool mouse_down;
     bool step;
     bool cfg_we;
@@ -43,13 +43,13 @@ typedef struct {
 /* The outputs of strand_top during one cycle. */
 typedef struct {
     bool frame_done;
-    uint32_t rd_x, rd_y;
+    uint32_t rd_x, rd_y, rd_z;
     int phase;
     bool fv, fec;
     uint32_t uidx, nidx, counter;
     int units;
     bool wb_valid[CYC_MAX_UNITS];
-    uint32_t wb_idx[CYC_MAX_UNITS], wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
+    uint32_t wb_idx[CYC_MAX_UNITS], wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS], wb_z[CYC_MAX_UNITS];
 } cyc_outputs;
 
 /* pair_sequencer: one instance (the pairwise constraints, or the spring pass). */
@@ -69,23 +69,26 @@ typedef struct {
     int lt;      /* toward's latency (cycles) */
     int ls;      /* spring_force's latency (cycles) */
     int spring0; /* the first spring edge of sc (springs follow the rods) */
+    int fill[2]; /* graph: edges loaded into the rod and the spring memory */
 
     /* strand_top */
     int phase, substep;
     bool frame_done;
-    fx_t mouse_q[2];
+    fx_t mouse_q[3];
     bool mouse_down_q;
     int init_u, init_n, init_count;
-    fx_t init_pos[2], start[2], step[2], prev_off[2];
+    fx_t init_pos[3], start[3], step[3], prev_off[3];
+    fx_t load[2][3];   /* LOAD_X..Z, LOAD_PX..PZ */
+    fx_t edge_rest;    /* EDGE_REST */
     uint32_t rd_u_q;
     /* node units (they run in step) */
     bool running, done;
     bool ground_pass; /* the pass under way is the ground pass */
     int vidx;
-    fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS];
+    fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS];
     bool wb_valid[CYC_MAX_UNITS];
     uint32_t wb_idx[CYC_MAX_UNITS];
-    fx_t wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS];
+    fx_t wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS], wb_z[CYC_MAX_UNITS];
     /* chain_sequencer (rule 0) */
     int sq_state, sq_iter, sq_timer;
     int uidx, nidx, counter;

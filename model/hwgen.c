@@ -25,13 +25,20 @@ static const char *reject(const scene *sc, const char *section, char *err, size_
 
 const char *hw_check(const scene *sc, char *err, size_t len)
 {
-    if (sc->body != BODY_CHAIN) return reject(sc, "graph", err, len, "graph bodies (they need the edge sequencer)");
-    if (sc->dim != 2) return reject(sc, "scene", err, len, "3D scenes");
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
     if (sc->en_mouse && sc->mouse != MOUSE_IMPULSE) return reject(sc, "mouse", err, len, "the grab form of the mouse");
-    /* The init walk gives every free node the same previous-position offset (PREV_X/Y),
+    if (sc->body == BODY_GRAPH) {
+        hw_params hp;
+        hw_params_of(sc, &hp);
+        if (sc->en_constraints && sc->rule != RULE_PAIRWISE)
+            return reject(sc, "constraints", err, len, "the centred rule on a graph (it walks a chain)");
+        if (2 * (hp.uw + hp.iw) + 1 > hp.w)
+            return reject(sc, "graph", err, len, "a graph whose EDGE word {spring, b, a} does not fit the width");
+        return NULL; /* every node is loaded with its own position and previous position */
+    }
+    /* The init walk gives every free node the same previous-position offset (PREV_X/Y/Z),
        and a pinned one none: the frame engine's offsets, in the scene's format, must agree. */
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < sc->dim; k++) {
         fx_t off = 0;
         bool seen = false;
         for (int i = 0; i < sc->n_nodes; i++) {
@@ -51,8 +58,19 @@ void hw_params_of(const scene *sc, hw_params *hp)
     memset(hp, 0, sizeof *hp);
     hp->w = sc->fmt.width;
     hp->f = sc->fmt.frac;
-    hp->m = sc->units;
-    hp->k = sc->nodes_per_unit;
+    hp->dim = sc->dim;
+    hp->graph = sc->body == BODY_GRAPH;
+    if (hp->graph) { /* one unit holds every node: the edge passes dominate a graph's frame */
+        hp->m = 1;
+        hp->k = sc->n_nodes;
+        for (int e = 0; e < sc->n_edges; e++) {
+            if (sc->edges[e].kind == EDGE_SPRING) hp->e_springs++;
+            else hp->e_rods++;
+        }
+    } else {
+        hp->m = sc->units;
+        hp->k = sc->nodes_per_unit;
+    }
     hp->sqrt_bits = sc->fmt.sqrt_bits;
     hp->div_bits = sc->fmt.div_bits;
     hp->iter = sc->iterations;
@@ -60,15 +78,20 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->en_gravity = sc->en_gravity;
     hp->en_damping = sc->damping > 0;
     hp->en_mouse = sc->en_mouse;
-    hp->en_constraints = sc->en_constraints;
+    hp->en_constraints = sc->en_constraints && (!hp->graph || hp->e_rods > 0);
     hp->rule = sc->rule == RULE_PAIRWISE ? 1 : 0;
-    hp->en_springs = sc->en_springs;
+    hp->en_springs = sc->en_springs && (!hp->graph || hp->e_springs > 0);
+    if (hp->e_rods < 1) hp->e_rods = 1; /* the memories' sizes: at least one entry (unused in a chain) */
+    if (hp->e_springs < 1) hp->e_springs = 1;
     hp->en_ground = sc->en_ground;
     hp->ground_axis = sc->en_ground ? sc->ground_axis : 1;
     hp->ground_above = !sc->en_ground || sc->ground_sign > 0;
     hp->uw = hp->m > 1 ? clog2(hp->m) : 1;
     hp->iw = hp->k > 1 ? clog2(hp->k) : 1;
-    hp->cw = clog2((long)hp->m * hp->k + 1);
+    long most = (long)hp->m * hp->k;
+    if (hp->e_rods > most) most = hp->e_rods;
+    if (hp->e_springs > most) most = hp->e_springs;
+    hp->cw = clog2(most + 1);
 }
 
 uint32_t hw_word(const fx_format *fmt, fx_t v)
@@ -83,13 +106,14 @@ uint32_t hw_node_addr(const hw_params *hp, int node)
 
 long hw_cycles_per_frame(const hw_params *hp)
 {
-    long toward = hp->sqrt_bits + hp->div_bits + 9;             /* toward.v: start cycle to done cycle */
+    long toward = hp->sqrt_bits + hp->div_bits + 2 * hp->dim + 5;                  /* toward.v: start to done */
+    long spring = hp->sqrt_bits + (long)hp->dim * hp->div_bits + 5 * hp->dim + 5; /* spring_force.v */
     long n = (long)hp->m * hp->k;
+    long rods = hp->graph ? hp->e_rods : n - 1, springs = hp->graph ? hp->e_springs : n - 1; /* links per pass */
     long pass = hp->rule == 0 ? 2 + n * (2 * toward + 2)         /* centred: load C and D, then every node: two targets, slide */
-                              : (n - 1) * (toward + 5);          /* pairwise: every link: read a, b, excess, write a, b */
-    long spring = hp->sqrt_bits + 2 * hp->div_bits + 15;         /* spring_force.v: start cycle to done cycle */
+                              : rods * (toward + 5);             /* pairwise: every link: read a, b, excess, write a, b */
     long substep = hp->en_constraints ? hp->k + 2 + hp->iter * pass : hp->k + 1;
-    if (hp->en_springs) substep += 1 + (n - 1) * (spring + 5); /* the spring pass: every link, as pairwise */
+    if (hp->en_springs) substep += 1 + springs * (spring + 5); /* the spring pass: every link, as pairwise */
     if (hp->en_ground) substep += hp->k + 1;                    /* the ground pass: every node of a unit */
     return hp->substeps * substep + 1;
 }
@@ -116,19 +140,45 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
     PUT(STRAND_REG_KD, s->kd);
     PUT(STRAND_REG_GROUND, s->ground);
     PUT(STRAND_REG_FRICTION, s->friction);
-    for (int i = 0; i < sc->n_nodes; i++) /* the free nodes' offset (hw_check: they share it) */
-        if (!sc->pinned[i]) {
-            PUT(STRAND_REG_PREV_X, fx_from_double(f, sc->prev[i][0] - sc->pos[i][0]));
-            PUT(STRAND_REG_PREV_Y, fx_from_double(f, sc->prev[i][1] - sc->pos[i][1]));
-            break;
-        }
-    PUT(STRAND_REG_START_X, fx_from_double(f, sc->chain_start[0]));
-    PUT(STRAND_REG_START_Y, fx_from_double(f, sc->chain_start[1]));
-    PUT(STRAND_REG_STEP_X, fx_from_double(f, sc->chain_step[0]));
-    PUT(STRAND_REG_STEP_Y, fx_from_double(f, sc->chain_step[1]));
+    if (hp.dim == 3) {
+        PUT(STRAND_REG_GDT2_Z, s->gravity[2]);
+        PUT(STRAND_REG_BOX_Z, s->box[2]);
+    }
     for (int i = 0; i < sc->n_nodes; i++)
         if (sc->pinned[i]) PUT(STRAND_REG_PIN, (fx_t)hw_node_addr(&hp, i));
-    PUT(STRAND_REG_CMD, 1);
+    if (hp.graph) {
+        /* every node as the frame engine starts it, then the edges in the scene's order */
+        static const int load[2][3] = {{STRAND_REG_LOAD_X, STRAND_REG_LOAD_Y, STRAND_REG_LOAD_Z},
+                                       {STRAND_REG_LOAD_PX, STRAND_REG_LOAD_PY, STRAND_REG_LOAD_PZ}};
+        for (int i = 0; i < sc->n_nodes; i++) {
+            for (int k = 0; k < hp.dim; k++) {
+                PUT(load[0][k], s->pos[i][k]);
+                PUT(load[1][k], s->prev[i][k]);
+            }
+            PUT(STRAND_REG_NODE, (fx_t)hw_node_addr(&hp, i));
+        }
+        for (int e = 0; e < sc->n_edges; e++) {
+            const scene_edge *ed = &sc->edges[e];
+            uint32_t aw = (uint32_t)(hp.uw + hp.iw);
+            PUT(STRAND_REG_EDGE_REST, s->rest[e]);
+            PUT(STRAND_REG_EDGE, (fx_t)((uint32_t)(ed->kind == EDGE_SPRING) << (2 * aw) |
+                                        hw_node_addr(&hp, ed->b) << aw | hw_node_addr(&hp, ed->a)));
+        }
+    } else {
+        static const int start[3] = {STRAND_REG_START_X, STRAND_REG_START_Y, STRAND_REG_START_Z};
+        static const int stepr[3] = {STRAND_REG_STEP_X, STRAND_REG_STEP_Y, STRAND_REG_STEP_Z};
+        static const int prev[3] = {STRAND_REG_PREV_X, STRAND_REG_PREV_Y, STRAND_REG_PREV_Z};
+        for (int i = 0; i < sc->n_nodes; i++) /* the free nodes' offset (hw_check: they share it) */
+            if (!sc->pinned[i]) {
+                for (int k = 0; k < hp.dim; k++) PUT(prev[k], fx_from_double(f, sc->prev[i][k] - sc->pos[i][k]));
+                break;
+            }
+        for (int k = 0; k < hp.dim; k++) {
+            PUT(start[k], fx_from_double(f, sc->chain_start[k]));
+            PUT(stepr[k], fx_from_double(f, sc->chain_step[k]));
+        }
+        PUT(STRAND_REG_CMD, 1);
+    }
 #undef PUT
     return n;
 }
@@ -161,7 +211,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
 {
     hw_params hp;
     sim_fx s;
-    hw_write writes[4096 + 16];
+    hw_write writes[65536];
     int nw;
     FILE *f;
     bool ok = true;
@@ -178,7 +228,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
     }
     nw = hw_setup_writes(sc, &s, writes, (int)(sizeof writes / sizeof *writes));
     if (nw > (int)(sizeof writes / sizeof *writes)) {
-        snprintf(err, len, "%s:1: too many pinned nodes for one setup (%d writes)", sc->path, nw);
+        snprintf(err, len, "%s:1: too many nodes, pins or edges for one setup (%d writes)", sc->path, nw);
         sim_fx_free(&s);
         return false;
     }
@@ -195,6 +245,8 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.rule, hp.en_springs);
         fprintf(f, "`define STRAND_EN_GROUND 1'b%d\n`define STRAND_GROUND_AXIS %d\n`define STRAND_GROUND_ABOVE 1'b%d\n", hp.en_ground,
                 hp.ground_axis, hp.ground_above);
+        fprintf(f, "`define STRAND_DIM %d\n`define STRAND_GRAPH 1'b%d\n`define STRAND_E_RODS %d\n`define STRAND_E_SPRINGS %d\n",
+                hp.dim, hp.graph, hp.e_rods, hp.e_springs);
         fprintf(f, "`define STRAND_FRAMES %d\n`define STRAND_NCONFIG %d\n`define STRAND_CYCLES_PER_FRAME %ld\n", frames, nw,
                 hw_cycles_per_frame(&hp));
         ok = fclose(f) == 0;
@@ -209,27 +261,31 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
         fprintf(f, "#define STRAND_RULE %d\n#define STRAND_EN_SPRINGS %d\n", hp.rule, hp.en_springs);
         fprintf(f, "#define STRAND_EN_GROUND %d\n#define STRAND_GROUND_AXIS %d\n#define STRAND_GROUND_ABOVE %d\n", hp.en_ground,
                 hp.ground_axis, hp.ground_above);
+        fprintf(f, "#define STRAND_DIM %d\n#define STRAND_GRAPH %d\n#define STRAND_E_RODS %d\n#define STRAND_E_SPRINGS %d\n", hp.dim,
+                hp.graph, hp.e_rods, hp.e_springs);
         ok = fclose(f) == 0;
     } else ok = false;
     if (ok && (f = open_in(dir, "config.hex", err, len))) {
         for (int i = 0; i < nw; i++) fprintf(f, "%02x%08x\n", writes[i].addr, (unsigned)writes[i].data);
         ok = fclose(f) == 0;
     } else ok = false;
-    if (ok && (f = open_in(dir, "mouse.hex", err, len))) { /* per frame: button, x, y */
+    if (ok && (f = open_in(dir, "mouse.hex", err, len))) { /* per frame: button, x, y, z */
         for (int fr = 0; fr < frames; fr++) {
             double m[3];
             bool down;
             scene_mouse_at(sc, fr, m, &down);
-            fprintf(f, "%x %08x %08x\n", sc->en_mouse && down, (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[0])),
-                    (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[1])));
+            fprintf(f, "%x %08x %08x %08x\n", sc->en_mouse && down, (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[0])),
+                    (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[1])),
+                    hp.dim == 3 ? (unsigned)hw_word(&s.fmt, fx_from_double(&s.fmt, m[2])) : 0u);
         }
         ok = fclose(f) == 0;
     } else ok = false;
-    if (ok && (f = open_in(dir, "expected.hex", err, len))) { /* per frame, per node: x, y at the frame's end */
+    if (ok && (f = open_in(dir, "expected.hex", err, len))) { /* per frame, per node: x, y, z at the frame's end */
         for (int fr = 0; fr < frames; fr++) {
             sim_fx_frame(&s);
             for (int i = 0; i < sc->n_nodes; i++)
-                fprintf(f, "%08x %08x\n", (unsigned)hw_word(&s.fmt, s.pos[i][0]), (unsigned)hw_word(&s.fmt, s.pos[i][1]));
+                fprintf(f, "%08x %08x %08x\n", (unsigned)hw_word(&s.fmt, s.pos[i][0]), (unsigned)hw_word(&s.fmt, s.pos[i][1]),
+                        (unsigned)hw_word(&s.fmt, s.pos[i][2]));
         }
         ok = fclose(f) == 0;
     } else ok = false;

@@ -22,6 +22,9 @@ typedef struct {
     int ground_axis;   /* 0 x, 1 y */
     bool ground_above; /* nodes stay at or above the boundary (the scene's normal is +axis) */
     int rule; /* 0 centred (chain_sequencer), 1 pairwise (pair_sequencer) */
+    int dim;    /* 2 or 3 */
+    bool graph; /* a graph body: edge memories (e_rods, e_springs entries), nodes loaded one by one */
+    int e_rods, e_springs;
     int uw, iw, cw; /* derived widths, as strand_top computes them */
 } hw_params;
 

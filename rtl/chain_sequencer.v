@@ -30,7 +30,8 @@ module chain_sequencer #(
     parameter integer CW        = 5,     // counter width, holds M*K
     parameter integer ITER      = 1,     // passes per constraint phase
     parameter integer SQRT_BITS = W - 1, // root bits resolved
-    parameter integer DIV_BITS  = W - 1  // quotient bits resolved
+    parameter integer DIV_BITS  = W - 1, // quotient bits resolved
+    parameter integer DIM       = 2      // 2, or 3: a z lane (the same steps)
 ) (
     input  wire          clk,
     input  wire          reset,      // synchronous, active high
@@ -42,6 +43,7 @@ module chain_sequencer #(
     output reg  [IW-1:0] rd_nidx,
     input  wire [W-1:0]  rd_x,       // its data, the next cycle
     input  wire [W-1:0]  rd_y,
+    input  wire [W-1:0]  rd_z,       // DIM = 3 only
     input  wire          rd_pinned,
 
     output reg           wr_en,      // write C
@@ -49,6 +51,7 @@ module chain_sequencer #(
     output wire [IW-1:0] wr_nidx,
     output wire [W-1:0]  wr_x,
     output wire [W-1:0]  wr_y,
+    output wire [W-1:0]  wr_z,       // DIM = 3; else 0
 
     output reg  [UW-1:0] uidx,       // C's unit
     output reg  [IW-1:0] nidx,       // C's node within the unit
@@ -129,6 +132,7 @@ module chain_sequencer #(
     reg [W-1:0]   ux, uy, cx, cy, dx, dy;   // the window U, C, D
     reg           c_pin, d_pin, has_u, has_d;
     reg [W-1:0]   up_x, up_y;               // the point from U
+    reg [W-1:0]   uz, cz, dz, up_z;         // the z lane of the window (DIM = 3)
     reg           up_ok;
     reg [CW-1:0]  ahead;                    // index of the node after D
     reg [UW-1:0]  ahead_u;                  // and its address
@@ -139,24 +143,27 @@ module chain_sequencer #(
 
     // ---- the datapath ----
     wire         t_done, t_valid;
-    wire [W-1:0] t_x, t_y;
+    wire [W-1:0] t_x, t_y, t_z;
     wire         t_start = state_q == S_UP || (state_q == S_UP_W && t_done);
     wire         from_u  = state_q == S_UP;
     /* verilator lint_off PINCONNECTEMPTY */
     // busy is not needed: the FSM waits for done
-    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_toward (
+    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
         .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
         .p_x(from_u ? ux : dx), .p_y(from_u ? uy : dy), .c_x(cx), .c_y(cy), .rest_len(rest_len),
-        .busy(), .done(t_done), .t_x(t_x), .t_y(t_y), .valid(t_valid));
+        .p_z(from_u ? uz : dz), .c_z(cz),
+        .busy(), .done(t_done), .t_x(t_x), .t_y(t_y), .t_z(t_z), .valid(t_valid));
     /* verilator lint_on PINCONNECTEMPTY */
 
     // The new C, valid in S_DN_W when t_done (the point from D is t_*).
     wire         dn_ok = has_d && t_valid;
-    wire [W-1:0] avg_x, avg_y;
+    wire [W-1:0] avg_x, avg_y, avg_z;
     fx_avg #(.W(W)) u_avg_x (.a(up_x), .b(t_x), .y(avg_x));
     fx_avg #(.W(W)) u_avg_y (.a(up_y), .b(t_y), .y(avg_y));
+    fx_avg #(.W(W)) u_avg_z (.a(up_z), .b(t_z), .y(avg_z));
     wire [W-1:0] new_x = up_ok && dn_ok ? avg_x : up_ok ? up_x : dn_ok ? t_x : cx;
     wire [W-1:0] new_y = up_ok && dn_ok ? avg_y : up_ok ? up_y : dn_ok ? t_y : cy;
+    wire [W-1:0] new_z = up_ok && dn_ok ? avg_z : up_ok ? up_z : dn_ok ? t_z : cz;
     wire         moved = (up_ok || dn_ok) && !c_pin;
 
     // ---- storage read address: data arrives the cycle after ----
@@ -221,12 +228,14 @@ module chain_sequencer #(
             S_LOAD_C: begin
                 cx    <= rd_x;
                 cy    <= rd_y;
+                cz    <= DIM == 3 ? rd_z : {W{1'b0}};
                 c_pin <= rd_pinned;
                 has_u <= 1'b0;
             end
             S_LOAD_D: begin
                 dx      <= rd_x;
                 dy      <= rd_y;
+                dz      <= DIM == 3 ? rd_z : {W{1'b0}};
                 d_pin   <= rd_pinned;
                 has_d   <= N > 1;
                 ahead   <= TWO;
@@ -236,22 +245,27 @@ module chain_sequencer #(
             S_UP_W: if (t_done) begin
                 up_x  <= t_x;
                 up_y  <= t_y;
+                up_z  <= t_z;
                 up_ok <= has_u && t_valid;
             end
             S_DN_W: if (t_done && moved) begin  // a pinned C stays where it is, in the window too
                 cx <= new_x;
                 cy <= new_y;
+                cz <= new_z;
             end
             S_NEXT: begin
                 ux    <= cx;
                 uy    <= cy;
+                uz    <= cz;
                 has_u <= 1'b1;
                 cx    <= dx;
                 cy    <= dy;
+                cz    <= dz;
                 c_pin <= d_pin;
                 has_d <= ahead < N_COUNT;
                 dx    <= rd_x;
                 dy    <= rd_y;
+                dz    <= DIM == 3 ? rd_z : {W{1'b0}};
                 d_pin <= rd_pinned;
                 ahead <= ahead + 1'b1;
                 {ahead_u, ahead_n} <= next_node(ahead_u, ahead_n);
@@ -265,6 +279,7 @@ module chain_sequencer #(
     assign wr_nidx = nidx;
     assign wr_x    = cx;
     assign wr_y    = cy;
+    assign wr_z    = cz;
     assign fec     = counter == N_COUNT;
 
 endmodule

@@ -39,8 +39,9 @@ module node_unit #(
     parameter [0:0]  EN_MOUSE = 1'b1,  // reference-000 mouse impulse
     parameter [0:0]  EN_SPRINGS = 1'b0,  // per-node spring force: storage, added in the Verlet step
     parameter [0:0]  EN_GROUND  = 1'b0,  // the ground pass (reference 001): collision with friction
-    parameter integer GROUND_AXIS = 1,   // the ground's normal axis: 0 x, 1 y
+    parameter integer GROUND_AXIS = 1,   // the ground's normal axis: 0 x, 1 y, 2 z (DIM = 3)
     parameter [0:0]  GROUND_ABOVE = 1'b1, // 1: nodes stay at or above the boundary on that axis, 0: below
+    parameter integer DIM        = 2,    // 2, or 3: a z lane (storage and datapath)
     /* verilator lint_off UNUSEDPARAM */
     // read only by the test-only planted fault (STRAND_FAULTS)
     parameter integer UNIT_ID  = 0      // this unit's number
@@ -57,12 +58,15 @@ module node_unit #(
 
     input  wire [W-1:0]  gdt2_x,       // g h^2, per axis
     input  wire [W-1:0]  gdt2_y,
+    input  wire [W-1:0]  gdt2_z,       // DIM = 3 only, as every z input
     input  wire [W-1:0]  damping,      // d, 0 <= d < 1
     input  wire [W-1:0]  impulse,      // a
     input  wire [W-1:0]  box_x,        // in-touch half-widths
     input  wire [W-1:0]  box_y,
+    input  wire [W-1:0]  box_z,
     input  wire [W-1:0]  mouse_x,      // the pointer, sampled at the frame start
     input  wire [W-1:0]  mouse_y,
+    input  wire [W-1:0]  mouse_z,
     input  wire          mouse_down,
 
     // port A between passes: the sequencer's reads, the sequencer's and init's writes
@@ -74,6 +78,10 @@ module node_unit #(
     output wire [W-1:0]  a_py,
     output wire [W-1:0]  a_accx,       // the spring force gathered so far (EN_SPRINGS; else 0)
     output wire [W-1:0]  a_accy,
+    output wire [W-1:0]  a_z,          // the z lane (DIM = 3; else 0)
+    output wire [W-1:0]  a_pz,
+    output wire [W-1:0]  a_accz,
+    input  wire [W-1:0]  acc_wz,
     input  wire          acc_we,       // the spring pass: write node w_idx's force
     input  wire [W-1:0]  acc_wx,
     input  wire [W-1:0]  acc_wy,
@@ -84,6 +92,8 @@ module node_unit #(
     input  wire          w_at_rest,    // also set px, py: the init walk
     input  wire [W-1:0]  w_px,         //   to these, or to w_x, w_y for a pinned node
     input  wire [W-1:0]  w_py,
+    input  wire [W-1:0]  w_z,          // DIM = 3
+    input  wire [W-1:0]  w_pz,
     input  wire          pin_en,       // pin node pin_idx
     input  wire [IW-1:0] pin_idx,
 
@@ -91,12 +101,14 @@ module node_unit #(
     input  wire [IW-1:0] b_idx,
     output reg  [W-1:0]  b_x,
     output reg  [W-1:0]  b_y,
+    output wire [W-1:0]  b_z,          // DIM = 3; else 0
 
     // write-back lane: a write to this unit, shown the cycle after it happens
     output reg           wb_valid,
     output reg  [IW-1:0] wb_idx,
     output reg  [W-1:0]  wb_x,
-    output reg  [W-1:0]  wb_y
+    output reg  [W-1:0]  wb_y,
+    output wire [W-1:0]  wb_z          // DIM = 3; else 0
 );
 
     // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
@@ -274,6 +286,7 @@ module node_unit #(
 
     // ---- the mouse impulse, after the Verlet step (px is now the old x) ----
     wire [W-1:0] npx;
+    wire         touch_z;  // |mouse.z - z| < box.z (DIM = 3; else 1): from g_lane_z
     generate
         if (EN_MOUSE) begin : g_mouse
             wire [W-1:0] ddx, ddy, ndx, ndy, px_plus, px_minus;
@@ -284,40 +297,65 @@ module node_unit #(
             fx_add #(.W(W)) u_ndy (.sub(1'b1), .a({W{1'b0}}), .b(ddy), .y(ndy), .sat());
             wire [W-1:0] adx = ddx[W-1] ? ndx : ddx;
             wire [W-1:0] ady = ddy[W-1] ? ndy : ddy;
-            wire in_touch = mouse_down && ($signed(adx) < $signed(box_x)) && ($signed(ady) < $signed(box_y));
+            wire in_touch = mouse_down && ($signed(adx) < $signed(box_x)) && ($signed(ady) < $signed(box_y)) && touch_z;
             fx_add #(.W(W)) u_pp (.sub(1'b0), .a(nx), .b(impulse), .y(px_plus), .sat());
             fx_add #(.W(W)) u_pm (.sub(1'b1), .a(nx), .b(impulse), .y(px_minus), .sat());
             assign npx = !in_touch ? q_x : ($signed(mouse_x) < $signed(q_x)) ? px_plus : px_minus;
         end else begin : g_no_mouse
             assign npx = q_x;
-            wire unused_mouse = &{1'b0, impulse, box_x, box_y, mouse_x, mouse_y, mouse_down};
+            wire unused_mouse = &{1'b0, impulse, box_x, box_y, mouse_x, mouse_y, mouse_down, touch_z};
         end
     endgenerate
 
     // ---- the ground pass: collision with friction ----
+    // The z lane (DIM = 3) lives in g_lane_z below; these are its port-A data and velocity.
+    wire [W-1:0]  q_z, q_pz, vz;
+    wire          unused_lane = &{1'b0, q_z, q_pz, vz};  // read only by some ground builds
     wire          g_hit;            // past the boundary
-    wire [W-1:0]  g_x, g_y, g_px, g_py;
+    wire [W-1:0]  g_x, g_y, g_z, g_px, g_py, g_pz;
     generate
         if (EN_GROUND) begin : g_ground
-            wire [W-1:0] z  = GROUND_AXIS == 0 ? q_x : q_y;
-            wire [W-1:0] vz = GROUND_AXIS == 0 ? vx : vy;   // z - pz
-            wire [W-1:0] vo = GROUND_AXIS == 0 ? vy : vx;   // o - po
-            wire [W-1:0] po = GROUND_AXIS == 0 ? q_py : q_px;
-            wire [W-1:0] npz, slip, npo;
-            assign g_hit = GROUND_ABOVE ? $signed(z) < $signed(ground) : $signed(ground) < $signed(z);
-            fx_add #(.W(W)) u_npz (.sub(1'b0), .a(ground), .b(vz), .y(npz), .sat());
-            fx_mul #(.W(W), .F(F)) u_slip (.a(vo), .b(friction), .y(slip), .sat(), .prod());
-            fx_add #(.W(W)) u_npo (.sub(1'b0), .a(po), .b(slip), .y(npo), .sat());
+            wire [W-1:0] n  = GROUND_AXIS == 0 ? q_x : GROUND_AXIS == 1 ? q_y : q_z;  // on the normal axis
+            wire [W-1:0] vn = GROUND_AXIS == 0 ? vx : GROUND_AXIS == 1 ? vy : vz;     // n - pn
+            wire [W-1:0] npn, fpx, fpy, fpz;
+            assign g_hit = GROUND_ABOVE ? $signed(n) < $signed(ground) : $signed(ground) < $signed(n);
+            fx_add #(.W(W)) u_npn (.sub(1'b0), .a(ground), .b(vn), .y(npn), .sat());
+            // friction on every other axis: po = po + (o - po) * friction
+            if (GROUND_AXIS != 0) begin : g_fx
+                wire [W-1:0] slip;
+                fx_mul #(.W(W), .F(F)) u_slip (.a(vx), .b(friction), .y(slip), .sat(), .prod());
+                fx_add #(.W(W)) u_fp (.sub(1'b0), .a(q_px), .b(slip), .y(fpx), .sat());
+            end else begin : g_fx_n
+                assign fpx = npn;
+            end
+            if (GROUND_AXIS != 1) begin : g_fy
+                wire [W-1:0] slip;
+                fx_mul #(.W(W), .F(F)) u_slip (.a(vy), .b(friction), .y(slip), .sat(), .prod());
+                fx_add #(.W(W)) u_fp (.sub(1'b0), .a(q_py), .b(slip), .y(fpy), .sat());
+            end else begin : g_fy_n
+                assign fpy = npn;
+            end
+            if (DIM == 3 && GROUND_AXIS != 2) begin : g_fz
+                wire [W-1:0] slip;
+                fx_mul #(.W(W), .F(F)) u_slip (.a(vz), .b(friction), .y(slip), .sat(), .prod());
+                fx_add #(.W(W)) u_fp (.sub(1'b0), .a(q_pz), .b(slip), .y(fpz), .sat());
+            end else begin : g_fz_n
+                assign fpz = npn;
+            end
             assign g_x  = GROUND_AXIS == 0 ? ground : q_x;
-            assign g_y  = GROUND_AXIS == 0 ? q_y : ground;
-            assign g_px = GROUND_AXIS == 0 ? npz : npo;
-            assign g_py = GROUND_AXIS == 0 ? npo : npz;
+            assign g_y  = GROUND_AXIS == 1 ? ground : q_y;
+            assign g_z  = GROUND_AXIS == 2 ? ground : q_z;
+            assign g_px = fpx;
+            assign g_py = fpy;
+            assign g_pz = fpz;
         end else begin : g_no_ground
             assign g_hit = 1'b0;
             assign g_x = q_x;
             assign g_y = q_y;
+            assign g_z = q_z;
             assign g_px = q_px;
             assign g_py = q_py;
+            assign g_pz = q_pz;
             wire unused_ground = &{1'b0, ground, friction, ground_start};
         end
     endgenerate
@@ -393,6 +431,116 @@ module node_unit #(
             end
         end
     end
+
+    // ---- the z lane (DIM = 3): storage, the Verlet step, the mouse's z test ----
+    // The same operations as x and y, in the same order (model/engine_body.h loops
+    // over the axes); the mouse impulse itself acts on x only (reference 000).
+    /* verilator lint_off PINCONNECTEMPTY */
+    // saturation flags are not needed: the saturated value is the result
+    generate
+        if (DIM == 3) begin : g_lane_z
+            reg [W-1:0] z_mem  [0:K-1];
+            reg [W-1:0] pz_mem [0:K-1];
+            reg [W-1:0] qz, qpz, bz, wbz;
+            always @(posedge clk)
+                if ({1'b0, a_addr} < K_COUNT) begin
+                    qz  <= z_mem[a_addr];
+                    qpz <= pz_mem[a_addr];
+                end
+            assign q_z  = qz;
+            assign q_pz = qpz;
+            assign a_z  = qz;
+            assign a_pz = qpz;
+
+            wire [W-1:0] vz_d, z1, gz, nz, qaz;
+            fx_add #(.W(W)) u_vz (.sub(1'b1), .a(qz), .b(qpz), .y(vz), .sat());
+            if (EN_DAMPING) begin : g_damping_z
+                wire [W-1:0] dvz;
+                fx_mul #(.W(W), .F(F)) u_dvz (.a(vz), .b(damping), .y(dvz), .sat(), .prod());
+                fx_add #(.W(W)) u_vzd (.sub(1'b1), .a(vz), .b(dvz), .y(vz_d), .sat());
+            end else begin : g_no_damping_z
+                assign vz_d = vz;
+            end
+            fx_add #(.W(W)) u_z1 (.sub(1'b0), .a(qz), .b(vz_d), .y(z1), .sat());
+            if (EN_GRAVITY) begin : g_gravity_z
+                fx_add #(.W(W)) u_gz (.sub(1'b0), .a(z1), .b(gdt2_z), .y(gz), .sat());
+            end else begin : g_no_gravity_z
+                assign gz = z1;
+                wire unused_gravity_z = &{1'b0, gdt2_z};
+            end
+            if (EN_SPRINGS) begin : g_springs_z
+                reg [W-1:0] az_mem [0:K-1];
+                reg [W-1:0] q_az;
+                always @(posedge clk)
+                    if ({1'b0, a_addr} < K_COUNT) q_az <= az_mem[a_addr];
+                integer j;
+                always @(posedge clk) begin
+                    if (reset) begin
+                        for (j = 0; j < K; j = j + 1) az_mem[j] <= {W{1'b0}};
+                    end else if (running_q && !ground_q && {1'b0, vidx_q} < K_COUNT) begin
+                        az_mem[vidx_q] <= {W{1'b0}};
+                    end else if (acc_we && {1'b0, w_idx} < K_COUNT) begin
+                        az_mem[w_idx] <= acc_wz;
+                    end
+                end
+                assign qaz = q_az;
+                fx_add #(.W(W)) u_fz (.sub(1'b0), .a(gz), .b(q_az), .y(nz), .sat());
+            end else begin : g_no_springs_z
+                assign qaz = {W{1'b0}};
+                assign nz = gz;
+                wire unused_springs_z = &{1'b0, acc_wz};
+            end
+            assign a_accz = qaz;
+            if (EN_MOUSE) begin : g_mouse_z
+                wire [W-1:0] ddz, ndz;
+                fx_add #(.W(W)) u_ddz (.sub(1'b1), .a(mouse_z), .b(nz), .y(ddz), .sat());
+                fx_add #(.W(W)) u_ndz (.sub(1'b1), .a({W{1'b0}}), .b(ddz), .y(ndz), .sat());
+                wire [W-1:0] adz = ddz[W-1] ? ndz : ddz;
+                assign touch_z = $signed(adz) < $signed(box_z);
+            end else begin : g_no_mouse_z
+                assign touch_z = 1'b1;
+                wire unused_mouse_z = &{1'b0, mouse_z, box_z};
+            end
+
+            wire [W-1:0] wz  = running_q ? (ground_q ? g_z : nz) : w_z;
+            wire [W-1:0] wpz = running_q ? (ground_q ? g_pz : qz) : w_pin ? w_z : w_pz;
+            integer i3;
+            always @(posedge clk) begin
+                if (reset) begin
+                    for (i3 = 0; i3 < K; i3 = i3 + 1) begin
+                        z_mem[i3]  <= {W{1'b0}};
+                        pz_mem[i3] <= {W{1'b0}};
+                    end
+                end else if (we && {1'b0, widx} < K_COUNT) begin
+                    z_mem[widx] <= wz;
+                    if (wprev) pz_mem[widx] <= wpz;
+                end
+            end
+            always @(posedge clk) begin
+                if (reset) begin
+                    bz  <= {W{1'b0}};
+                    wbz <= {W{1'b0}};
+                end else begin
+                    bz <= {1'b0, b_idx} < K_COUNT ? z_mem[b_idx] : {W{1'b0}};
+                    if (we && {1'b0, widx} < K_COUNT) wbz <= wz;
+                end
+            end
+            assign b_z  = bz;
+            assign wb_z = wbz;
+        end else begin : g_no_lane_z
+            assign q_z = {W{1'b0}};
+            assign q_pz = {W{1'b0}};
+            assign vz = {W{1'b0}};
+            assign a_z = {W{1'b0}};
+            assign a_pz = {W{1'b0}};
+            assign a_accz = {W{1'b0}};
+            assign b_z = {W{1'b0}};
+            assign wb_z = {W{1'b0}};
+            assign touch_z = 1'b1;
+            wire unused_z = &{1'b0, gdt2_z, box_z, mouse_z, acc_wz, w_z, w_pz, g_z, g_pz};
+        end
+    endgenerate
+    /* verilator lint_on PINCONNECTEMPTY */
 
 endmodule
 

@@ -44,12 +44,17 @@ module strand_top #(
     parameter integer RULE           = 0,     // their rule: 0 centred (reference 000), 1 pairwise (002)
     parameter [0:0]   EN_SPRINGS     = 1'b0,  // damped springs on the links (references 001, 004)
     parameter [0:0]   EN_GROUND      = 1'b0,  // ground collision with friction (reference 001)
-    parameter integer GROUND_AXIS    = 1,     // its normal axis: 0 x, 1 y
+    parameter integer GROUND_AXIS    = 1,     // its normal axis: 0 x, 1 y, 2 z
     parameter [0:0]   GROUND_ABOVE   = 1'b1,  // 1: nodes stay at or above the boundary, 0: at or below
+    parameter integer DIM            = 2,     // 2, or 3: a z lane everywhere
+    parameter [0:0]   GRAPH          = 1'b0,  // 0: a chain (implied links), 1: a graph (edge memories)
+    parameter integer E_RODS         = 1,     // GRAPH: rods and struts in the constraint memory
+    parameter integer E_SPRINGS      = 1,     // GRAPH: springs in the spring memory
     // derived widths (leave at their defaults)
     parameter integer UW             = M > 1 ? $clog2(M) : 1,         // unit index
     parameter integer IW             = K > 1 ? $clog2(K) : 1,         // node index within a unit
-    parameter integer CW             = $clog2(M * K + 1),             // node counter
+    parameter integer CW             = $clog2((M * K > E_RODS ? (M * K > E_SPRINGS ? M * K : E_SPRINGS)
+                                                  : (E_RODS > E_SPRINGS ? E_RODS : E_SPRINGS)) + 1), // node / edge counter
     parameter integer SW             = SUBSTEPS > 1 ? $clog2(SUBSTEPS) : 1
 ) (
     input  wire            clk,
@@ -57,6 +62,7 @@ module strand_top #(
 
     input  wire [W-1:0]    mouse_x,     // sampled when a frame starts
     input  wire [W-1:0]    mouse_y,
+    input  wire [W-1:0]    mouse_z,     // DIM = 3
     input  wire            mouse_down,
 
     input  wire            step,        // start a frame (when phase is IDLE)
@@ -69,6 +75,7 @@ module strand_top #(
     input  wire [UW+IW-1:0] rd_addr,    // position read port: {unit, node} in,
     output wire [W-1:0]    rd_x,        // its position the next cycle
     output wire [W-1:0]    rd_y,
+    output wire [W-1:0]    rd_z,        // DIM = 3; else 0
 
     output reg  [2:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain, 4 force, 5 ground
     output wire            fv,          // every unit finished its Verlet (or ground) pass
@@ -80,7 +87,8 @@ module strand_top #(
     output wire [M-1:0]    wb_valid,    // per unit: a node of this unit was written
     output wire [M*IW-1:0] wb_idx,      //   its index in the unit
     output wire [M*W-1:0]  wb_x,        //   its new position
-    output wire [M*W-1:0]  wb_y
+    output wire [M*W-1:0]  wb_y,
+    output wire [M*W-1:0]  wb_z         // DIM = 3; else 0
 );
 
     localparam integer N = M * K;
@@ -137,11 +145,18 @@ module strand_top #(
             $fatal(1, "strand_top: RULE must be 0 (centred) or 1 (pairwise) in %m");
 `endif
         end
-        if (GROUND_AXIS != 0 && GROUND_AXIS != 1) begin
+        if (GROUND_AXIS < 0 || GROUND_AXIS >= DIM || (DIM != 2 && DIM != 3)) begin
 `ifdef SYNTHESIS
-            $error("strand_top: GROUND_AXIS must be 0 (x) or 1 (y) in %m");
+            $error("strand_top: DIM must be 2 or 3 and GROUND_AXIS an axis of it (DIM=%0d GROUND_AXIS=%0d) in %m", DIM, GROUND_AXIS);
 `else
-            $fatal(1, "strand_top: GROUND_AXIS must be 0 (x) or 1 (y) in %m");
+            $fatal(1, "strand_top: DIM must be 2 or 3 and GROUND_AXIS an axis of it (DIM=%0d GROUND_AXIS=%0d) in %m", DIM, GROUND_AXIS);
+`endif
+        end
+        if (GRAPH && (E_RODS < 1 || E_SPRINGS < 1 || 2 * (UW + IW) + 1 > W || (EN_CONSTRAINTS && RULE != 1))) begin
+`ifdef SYNTHESIS
+            $error("strand_top: a graph needs E_RODS, E_SPRINGS >= 1, the pairwise rule, and an EDGE word {spring, b, a} within W in %m");
+`else
+            $fatal(1, "strand_top: a graph needs E_RODS, E_SPRINGS >= 1, the pairwise rule, and an EDGE word {spring, b, a} within W in %m");
 `endif
         end
         if (UW + IW > W) begin
@@ -167,9 +182,17 @@ module strand_top #(
     // ---- run-time registers ----
     reg [W-1:0] gdt2_x, gdt2_y, rest_len, impulse, box_x, box_y, damping;
     reg [W-1:0] start_x, start_y, step_x, step_y, ks, kd, ground, friction, prev_x, prev_y;
+    reg [W-1:0] gdt2_z, box_z, start_z, step_z, prev_z;                   // DIM = 3
+    reg [W-1:0] load_x, load_y, load_z, load_px, load_py, load_pz, edge_rest;
 
     wire cmd_init = cfg_we && cfg_addr == `STRAND_REG_CMD && cfg_data[0];
     wire pin_we   = cfg_we && cfg_addr == `STRAND_REG_PIN;
+    wire node_we  = cfg_we && cfg_addr == `STRAND_REG_NODE && phase == PH_IDLE;  // only when idle
+    wire edge_we  = cfg_we && cfg_addr == `STRAND_REG_EDGE;
+    localparam integer AW = UW + IW;
+    wire [AW-1:0] edge_a = cfg_data[AW-1:0];
+    wire [AW-1:0] edge_b = cfg_data[2*AW-1:AW];
+    wire          edge_spring = cfg_data[(2*AW < W ? 2*AW : W-1)];
 
     always @(posedge clk) begin
         if (reset) begin
@@ -178,6 +201,9 @@ module strand_top #(
             start_x <= {W{1'b0}}; start_y <= {W{1'b0}}; step_x <= {W{1'b0}}; step_y <= {W{1'b0}};
             ks <= {W{1'b0}}; kd <= {W{1'b0}}; ground <= {W{1'b0}}; friction <= {W{1'b0}};
             prev_x <= {W{1'b0}}; prev_y <= {W{1'b0}};
+            gdt2_z <= {W{1'b0}}; box_z <= {W{1'b0}}; start_z <= {W{1'b0}}; step_z <= {W{1'b0}}; prev_z <= {W{1'b0}};
+            load_x <= {W{1'b0}}; load_y <= {W{1'b0}}; load_z <= {W{1'b0}};
+            load_px <= {W{1'b0}}; load_py <= {W{1'b0}}; load_pz <= {W{1'b0}}; edge_rest <= {W{1'b0}};
         end else if (cfg_we) begin
             case (cfg_addr)
                 `STRAND_REG_GDT2_X:  gdt2_x   <= cfg_data;
@@ -197,6 +223,18 @@ module strand_top #(
                 `STRAND_REG_FRICTION: friction <= cfg_data;
                 `STRAND_REG_PREV_X:  prev_x   <= cfg_data;
                 `STRAND_REG_PREV_Y:  prev_y   <= cfg_data;
+                `STRAND_REG_GDT2_Z:  gdt2_z   <= cfg_data;
+                `STRAND_REG_BOX_Z:   box_z    <= cfg_data;
+                `STRAND_REG_START_Z: start_z  <= cfg_data;
+                `STRAND_REG_STEP_Z:  step_z   <= cfg_data;
+                `STRAND_REG_PREV_Z:  prev_z   <= cfg_data;
+                `STRAND_REG_LOAD_X:  load_x   <= cfg_data;
+                `STRAND_REG_LOAD_Y:  load_y   <= cfg_data;
+                `STRAND_REG_LOAD_Z:  load_z   <= cfg_data;
+                `STRAND_REG_LOAD_PX: load_px  <= cfg_data;
+                `STRAND_REG_LOAD_PY: load_py  <= cfg_data;
+                `STRAND_REG_LOAD_PZ: load_pz  <= cfg_data;
+                `STRAND_REG_EDGE_REST: edge_rest <= cfg_data;
                 default: ;
             endcase
         end
@@ -204,13 +242,13 @@ module strand_top #(
 
     // ---- the frame FSM ----
     reg  [SW-1:0] substep_q;
-    reg  [W-1:0]  mouse_x_q, mouse_y_q;
+    reg  [W-1:0]  mouse_x_q, mouse_y_q, mouse_z_q;
     reg           mouse_down_q;
     reg  [UW-1:0] init_u;      // the init walk: node being laid out
     reg  [IW-1:0] init_n;
     reg  [CW-1:0] init_count;
-    reg  [W-1:0]  init_x, init_y;
-    wire [W-1:0]  init_x_next, init_y_next, init_px, init_py;
+    reg  [W-1:0]  init_x, init_y, init_z;
+    wire [W-1:0]  init_x_next, init_y_next, init_px, init_py, init_z_next, init_pz;
     wire          seq_done, force_done;
     wire          fec_seq;
 
@@ -232,6 +270,8 @@ module strand_top #(
     fx_add #(.W(W)) u_init_y (.sub(1'b0), .a(init_y), .b(step_y), .y(init_y_next), .sat());
     fx_add #(.W(W)) u_init_px (.sub(1'b0), .a(init_x), .b(prev_x), .y(init_px), .sat());
     fx_add #(.W(W)) u_init_py (.sub(1'b0), .a(init_y), .b(prev_y), .y(init_py), .sat());
+    fx_add #(.W(W)) u_init_z  (.sub(1'b0), .a(init_z), .b(step_z), .y(init_z_next), .sat());
+    fx_add #(.W(W)) u_init_pz (.sub(1'b0), .a(init_z), .b(prev_z), .y(init_pz), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     always @(posedge clk) begin
@@ -241,12 +281,14 @@ module strand_top #(
             substep_q    <= {SW{1'b0}};
             mouse_x_q    <= {W{1'b0}};
             mouse_y_q    <= {W{1'b0}};
+            mouse_z_q    <= {W{1'b0}};
             mouse_down_q <= 1'b0;
             init_u       <= {UW{1'b0}};
             init_n       <= {IW{1'b0}};
             init_count   <= {CW{1'b0}};
             init_x       <= {W{1'b0}};
             init_y       <= {W{1'b0}};
+            init_z       <= {W{1'b0}};
             frame_done   <= 1'b0;
         end else begin
             case (phase)
@@ -258,17 +300,20 @@ module strand_top #(
                         init_count <= {CW{1'b0}};
                         init_x     <= start_x;
                         init_y     <= start_y;
+                        init_z     <= DIM == 3 ? start_z : {W{1'b0}};
                     end else if (step) begin
                         phase        <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
                         substep_q    <= {SW{1'b0}};
                         mouse_x_q    <= mouse_x;
                         mouse_y_q    <= mouse_y;
+                        mouse_z_q    <= DIM == 3 ? mouse_z : {W{1'b0}};
                         mouse_down_q <= mouse_down;
                     end
                 end
                 PH_INIT: begin
                     init_x     <= init_x_next;
                     init_y     <= init_y_next;
+                    init_z     <= init_z_next;
                     init_count <= init_count + 1'b1;
                     if (init_n == K_LAST) begin
                         init_n <= {IW{1'b0}};
@@ -302,12 +347,12 @@ module strand_top #(
     wire [IW-1:0] c_rd_n, c_wr_n, c_nidx;
     wire [CW-1:0] c_counter;
     wire          c_wr_en;
-    wire [W-1:0]  c_wr_x, c_wr_y;
+    wire [W-1:0]  c_wr_x, c_wr_y, c_wr_z;
     wire [UW-1:0] f_rd_u, f_wr_u, f_uidx;
     wire [IW-1:0] f_rd_n, f_wr_n, f_nidx;
     wire [CW-1:0] f_counter;
     wire          f_wr_en;
-    wire [W-1:0]  f_wr_x, f_wr_y;
+    wire [W-1:0]  f_wr_x, f_wr_y, f_wr_z;
     wire          in_force = phase == PH_FORCE;
     wire [UW-1:0] seq_rd_u = in_force ? f_rd_u : c_rd_u;
     wire [IW-1:0] seq_rd_n = in_force ? f_rd_n : c_rd_n;
@@ -315,7 +360,7 @@ module strand_top #(
     assign nidx    = in_force ? f_nidx : c_nidx;
     assign counter = in_force ? f_counter : c_counter;
 
-    wire [M*W-1:0] a_x_all, a_y_all, a_px_all, a_py_all, a_accx_all, a_accy_all;
+    wire [M*W-1:0] a_x_all, a_y_all, a_px_all, a_py_all, a_accx_all, a_accy_all, a_z_all, a_pz_all, a_accz_all;
     wire [M-1:0]  a_pin_all, done_all;
     reg  [UW-1:0] rd_sel_q;  // unit whose port-A data the sequencer sees
     // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
@@ -327,28 +372,36 @@ module strand_top #(
     wire [W-1:0]  seq_rd_accx = sel_ok ? a_accx_all[rd_sel_q * W +: W] : {W{1'b0}};
     wire [W-1:0]  seq_rd_accy = sel_ok ? a_accy_all[rd_sel_q * W +: W] : {W{1'b0}};
     wire          seq_rd_pin  = sel_ok && a_pin_all[rd_sel_q];
+    wire [W-1:0]  seq_rd_z    = sel_ok ? a_z_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_pz   = sel_ok ? a_pz_all[rd_sel_q * W +: W] : {W{1'b0}};
+    wire [W-1:0]  seq_rd_accz = sel_ok ? a_accz_all[rd_sel_q * W +: W] : {W{1'b0}};
 
     always @(posedge clk) rd_sel_q <= seq_rd_u;
-    wire unused_rd = &{1'b0, seq_rd_x, seq_rd_y, seq_rd_pin};  // a build with neither pass reads nothing
+    wire unused_rd = &{1'b0, seq_rd_x, seq_rd_y, seq_rd_pin, seq_rd_z, seq_rd_pz, seq_rd_accz, edge_we, edge_a, edge_b,
+                       edge_spring, edge_rest};  // a build with neither pass reads nothing
 
     /* verilator lint_off PINCONNECTEMPTY */
     // the pairwise pass's px/py/force inputs and the constants it does not use
     generate
         if (EN_CONSTRAINTS && RULE == 0) begin : g_constraints
             chain_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
-                              .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) u_seq (
+                              .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
-                .rd_uidx(c_rd_u), .rd_nidx(c_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
-                .wr_en(c_wr_en), .wr_uidx(c_wr_u), .wr_nidx(c_wr_n), .wr_x(c_wr_x), .wr_y(c_wr_y),
+                .rd_uidx(c_rd_u), .rd_nidx(c_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_z(seq_rd_z),
+                .rd_pinned(seq_rd_pin),
+                .wr_en(c_wr_en), .wr_uidx(c_wr_u), .wr_nidx(c_wr_n), .wr_x(c_wr_x), .wr_y(c_wr_y), .wr_z(c_wr_z),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec_seq));
         end else if (EN_CONSTRAINTS) begin : g_pairwise
             pair_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(ITER),
-                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .SPRING(1'b0)) u_seq (
+                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .SPRING(1'b0), .DIM(DIM),
+                             .GRAPH(GRAPH), .E(E_RODS)) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
+                .e_we(edge_we && !edge_spring), .e_a(edge_a), .e_b(edge_b), .e_rest(edge_rest),
                 .ks({W{1'b0}}), .kd({W{1'b0}}),
                 .rd_uidx(c_rd_u), .rd_nidx(c_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
                 .rd_px({W{1'b0}}), .rd_py({W{1'b0}}), .rd_accx({W{1'b0}}), .rd_accy({W{1'b0}}),
-                .wr_en(c_wr_en), .wr_uidx(c_wr_u), .wr_nidx(c_wr_n), .wr_x(c_wr_x), .wr_y(c_wr_y),
+                .rd_z(seq_rd_z), .rd_pz({W{1'b0}}), .rd_accz({W{1'b0}}),
+                .wr_en(c_wr_en), .wr_uidx(c_wr_u), .wr_nidx(c_wr_n), .wr_x(c_wr_x), .wr_y(c_wr_y), .wr_z(c_wr_z),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec_seq));
         end else begin : g_no_constraints
             assign seq_done = 1'b0;
@@ -359,6 +412,7 @@ module strand_top #(
             assign c_wr_n = {IW{1'b0}};
             assign c_wr_x = {W{1'b0}};
             assign c_wr_y = {W{1'b0}};
+            assign c_wr_z = {W{1'b0}};
             assign c_uidx = {UW{1'b0}};
             assign c_nidx = {IW{1'b0}};
             assign c_counter = {CW{1'b0}};
@@ -368,12 +422,15 @@ module strand_top #(
 
         if (EN_SPRINGS) begin : g_springs
             pair_sequencer #(.W(W), .F(F), .M(M), .K(K), .UW(UW), .IW(IW), .CW(CW), .ITER(1),
-                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .SPRING(1'b1)) u_force (
+                             .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .SPRING(1'b1), .DIM(DIM),
+                             .GRAPH(GRAPH), .E(E_SPRINGS)) u_force (
                 .clk(clk), .reset(reset), .start(force_start), .done(force_done), .rest_len(rest_len),
+                .e_we(edge_we && edge_spring), .e_a(edge_a), .e_b(edge_b), .e_rest(edge_rest),
                 .ks(ks), .kd(kd),
                 .rd_uidx(f_rd_u), .rd_nidx(f_rd_n), .rd_x(seq_rd_x), .rd_y(seq_rd_y), .rd_pinned(seq_rd_pin),
                 .rd_px(seq_rd_px), .rd_py(seq_rd_py), .rd_accx(seq_rd_accx), .rd_accy(seq_rd_accy),
-                .wr_en(f_wr_en), .wr_uidx(f_wr_u), .wr_nidx(f_wr_n), .wr_x(f_wr_x), .wr_y(f_wr_y),
+                .rd_z(seq_rd_z), .rd_pz(seq_rd_pz), .rd_accz(seq_rd_accz),
+                .wr_en(f_wr_en), .wr_uidx(f_wr_u), .wr_nidx(f_wr_n), .wr_x(f_wr_x), .wr_y(f_wr_y), .wr_z(f_wr_z),
                 .uidx(f_uidx), .nidx(f_nidx), .counter(f_counter), .fec());
         end else begin : g_no_springs
             assign force_done = 1'b0;
@@ -384,10 +441,12 @@ module strand_top #(
             assign f_wr_n = {IW{1'b0}};
             assign f_wr_x = {W{1'b0}};
             assign f_wr_y = {W{1'b0}};
+            assign f_wr_z = {W{1'b0}};
             assign f_uidx = {UW{1'b0}};
             assign f_nidx = {IW{1'b0}};
             assign f_counter = {CW{1'b0}};
             wire unused_springs = &{1'b0, ks, kd, force_start, seq_rd_px, seq_rd_py, seq_rd_accx, seq_rd_accy};
+            // (the z lane's port-A data is in unused_rd)
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
@@ -396,11 +455,12 @@ module strand_top #(
     wire [UW-1:0] rd_u = rd_addr[UW+IW-1:IW];
     wire [IW-1:0] rd_n = rd_addr[IW-1:0];
     reg  [UW-1:0] rd_u_q;
-    wire [M*W-1:0] b_x_all, b_y_all;
+    wire [M*W-1:0] b_x_all, b_y_all, b_z_all;
     always @(posedge clk) rd_u_q <= rd_u;
     wire rd_ok = {1'b0, rd_u_q} < M_COUNT;  // past the last unit: 0, never X
     assign rd_x = rd_ok ? b_x_all[rd_u_q * W +: W] : {W{1'b0}};
     assign rd_y = rd_ok ? b_y_all[rd_u_q * W +: W] : {W{1'b0}};
+    assign rd_z = rd_ok ? b_z_all[rd_u_q * W +: W] : {W{1'b0}};
 
     wire [UW-1:0] pin_u = cfg_data[UW+IW-1:IW];
     wire [IW-1:0] pin_n = cfg_data[IW-1:0];
@@ -410,26 +470,33 @@ module strand_top #(
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
             wire init_we = phase == PH_INIT && init_u == U_ID;
+            wire load_we = node_we && pin_u == U_ID;  // NODE: the address is in cfg_data, as for PIN
             wire seq_we  = c_wr_en && c_wr_u == U_ID;
             wire acc_we  = f_wr_en && f_wr_u == U_ID;
             node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
                         .EN_MOUSE(EN_MOUSE), .EN_SPRINGS(EN_SPRINGS), .EN_GROUND(EN_GROUND),
-                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .UNIT_ID(u)) u_unit (
+                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .DIM(DIM), .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
                 .ground(ground), .friction(friction),
-                .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .damping(damping), .impulse(impulse),
-                .box_x(box_x), .box_y(box_y), .mouse_x(mouse_x_q), .mouse_y(mouse_y_q), .mouse_down(mouse_down_q),
+                .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .gdt2_z(gdt2_z), .damping(damping), .impulse(impulse),
+                .box_x(box_x), .box_y(box_y), .box_z(box_z),
+                .mouse_x(mouse_x_q), .mouse_y(mouse_y_q), .mouse_z(mouse_z_q), .mouse_down(mouse_down_q),
                 .a_idx(seq_rd_n), .a_x(a_x_all[u*W +: W]), .a_y(a_y_all[u*W +: W]), .a_pinned(a_pin_all[u]),
                 .a_px(a_px_all[u*W +: W]), .a_py(a_py_all[u*W +: W]),
                 .a_accx(a_accx_all[u*W +: W]), .a_accy(a_accy_all[u*W +: W]),
-                .acc_we(acc_we), .acc_wx(f_wr_x), .acc_wy(f_wr_y),
-                .w_en(init_we || seq_we), .w_idx(init_we ? init_n : acc_we ? f_wr_n : c_wr_n),
-                .w_x(init_we ? init_x : c_wr_x), .w_y(init_we ? init_y : c_wr_y), .w_at_rest(init_we),
-                .w_px(init_px), .w_py(init_py),
+                .a_z(a_z_all[u*W +: W]), .a_pz(a_pz_all[u*W +: W]), .a_accz(a_accz_all[u*W +: W]),
+                .acc_we(acc_we), .acc_wx(f_wr_x), .acc_wy(f_wr_y), .acc_wz(f_wr_z),
+                .w_en(init_we || load_we || seq_we),
+                .w_idx(init_we ? init_n : load_we ? pin_n : acc_we ? f_wr_n : c_wr_n),
+                .w_x(init_we ? init_x : load_we ? load_x : c_wr_x), .w_y(init_we ? init_y : load_we ? load_y : c_wr_y),
+                .w_z(init_we ? init_z : load_we ? load_z : c_wr_z),
+                .w_at_rest(init_we || load_we),
+                .w_px(init_we ? init_px : load_px), .w_py(init_we ? init_py : load_py), .w_pz(init_we ? init_pz : load_pz),
                 .pin_en(pin_we && pin_u == U_ID), .pin_idx(pin_n),
-                .b_idx(rd_n), .b_x(b_x_all[u*W +: W]), .b_y(b_y_all[u*W +: W]),
-                .wb_valid(wb_valid[u]), .wb_idx(wb_idx[u*IW +: IW]), .wb_x(wb_x[u*W +: W]), .wb_y(wb_y[u*W +: W]));
+                .b_idx(rd_n), .b_x(b_x_all[u*W +: W]), .b_y(b_y_all[u*W +: W]), .b_z(b_z_all[u*W +: W]),
+                .wb_valid(wb_valid[u]), .wb_idx(wb_idx[u*IW +: IW]), .wb_x(wb_x[u*W +: W]), .wb_y(wb_y[u*W +: W]),
+                .wb_z(wb_z[u*W +: W]));
         end
     endgenerate
 

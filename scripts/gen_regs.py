@@ -29,6 +29,20 @@ REGS = [
     ("FRICTION", 16, "ground friction factor 1 - u: the share of tangential motion kept at a contact (Q.F)"),
     ("PREV_X", 17, "initial previous position of each free node minus its position, x: -v h (Q.F)"),
     ("PREV_Y", 18, "initial previous position of each free node minus its position, y (Q.F)"),
+    ("GDT2_Z", 19, "gravity times h^2, z (DIM = 3; Q.F)"),
+    ("BOX_Z", 20, "mouse in-touch half-width minZ (DIM = 3; Q.F)"),
+    ("START_Z", 21, "initial position of node 0, z (DIM = 3; Q.F)"),
+    ("STEP_Z", 22, "initial offset from one node to the next, z (DIM = 3; Q.F)"),
+    ("PREV_Z", 23, "initial previous-position offset of free nodes, z (DIM = 3; Q.F)"),
+    ("LOAD_X", 24, "a node's position for a NODE write, x (Q.F)"),
+    ("LOAD_Y", 25, "a node's position for a NODE write, y (Q.F)"),
+    ("LOAD_Z", 26, "a node's position for a NODE write, z (DIM = 3; Q.F)"),
+    ("LOAD_PX", 27, "a node's previous position for a NODE write, x (Q.F)"),
+    ("LOAD_PY", 28, "a node's previous position for a NODE write, y (Q.F)"),
+    ("LOAD_PZ", 29, "a node's previous position for a NODE write, z (DIM = 3; Q.F)"),
+    ("NODE", 30, "write a node address {unit, node}: that node takes LOAD (a pinned one at rest); idle only"),
+    ("EDGE_REST", 31, "the rest length of the next EDGE write (GRAPH; Q.F)"),
+    ("EDGE", 32, "GRAPH: append an edge {spring, b, a} (addresses {unit, node}) to the rod or the spring memory"),
 ]
 
 

@@ -38,7 +38,8 @@ PARAM_FIELDS = {"W": "width", "F": "frac", "M": "units", "K": "nodes_per_unit", 
                 "DIV_BITS": "div_bits", "ITER": "iterations", "SUBSTEPS": "substeps", "EN_GRAVITY": "gravity",
                 "EN_DAMPING": "damping", "EN_MOUSE": "mouse", "EN_CONSTRAINTS": "constraints", "RULE": "rule",
                 "EN_SPRINGS": "springs", "EN_GROUND": "ground", "GROUND_AXIS": "ground_axis",
-                "GROUND_ABOVE": "ground_above"}
+                "GROUND_ABOVE": "ground_above", "DIM": "dim", "GRAPH": "graph", "E_RODS": "e_rods",
+                "E_SPRINGS": "e_springs"}
 
 
 def read_build(path):
@@ -58,7 +59,7 @@ def read_build(path):
     missing = set(PARAM_FIELDS.values()) - set(build)
     if missing:
         sys.exit(f"FAIL lockstep: {out}/params.vh lacks {sorted(missing)}")
-    for key in ("gravity", "damping", "mouse", "constraints", "springs", "ground", "ground_above"):
+    for key in ("gravity", "damping", "mouse", "constraints", "springs", "ground", "ground_above", "graph"):
         build[key] = bool(build[key])
     build["rule"] = ["centred", "pairwise"][build["rule"]]
     return build

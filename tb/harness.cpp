@@ -143,7 +143,7 @@ class Run {
         std::vector<double> p((size_t)sc_.n_nodes * 3, 0.0);
         for (int i = 0; i < sc_.n_nodes; i++) {
             double e2 = 0;
-            for (int a = 0; a < 2; a++) {
+            for (int a = 0; a < sc_.dim; a++) {
                 double v = fx_to_double(&sc_.fmt, model_.s.pos[i][a]);
                 p[(size_t)i * 3 + (size_t)a] = v;
                 e2 += (v - dbl.pos[i][a]) * (v - dbl.pos[i][a]);
@@ -157,6 +157,7 @@ class Run {
     void noise(cyc_inputs &in) {
         in.mouse_x = (uint32_t)rng_.next() & mask_;
         in.mouse_y = (uint32_t)rng_.next() & mask_;
+        in.mouse_z = (uint32_t)rng_.next() & mask_;
         in.mouse_down = rng_.below(2);
         // mostly valid node addresses, sometimes any address
         uint32_t node = rng_.below((uint32_t)(hp_.m * hp_.k));
@@ -195,7 +196,7 @@ bool Run::compare() {
     cyc_outputs m;
     cyc_get_outputs(&model_, &m);
     // (name, rtl, model) of every output; names are only formatted on a mismatch
-    uint64_t rtl[9 + 4 * CYC_MAX_UNITS], mod[9 + 4 * CYC_MAX_UNITS];
+    uint64_t rtl[10 + 5 * CYC_MAX_UNITS], mod[10 + 5 * CYC_MAX_UNITS];
     int n = 0;
     auto put = [&](uint64_t a, uint64_t b) { rtl[n] = a, mod[n++] = b; };
     put(top_->frame_done, m.frame_done);
@@ -207,19 +208,21 @@ bool Run::compare() {
     put(top_->uidx, m.uidx);
     put(top_->nidx, m.nidx);
     put(top_->counter, m.counter);
+    put(top_->rd_z, m.rd_z);
     for (int u = 0; u < hp_.m; u++) {
         put(lane(top_->wb_valid, u, 1), m.wb_valid[u]);
         put(lane(top_->wb_idx, u, hp_.iw), m.wb_idx[u]);
         put(lane(top_->wb_x, u, hp_.w), m.wb_x[u]);
         put(lane(top_->wb_y, u, hp_.w), m.wb_y[u]);
+        put(lane(top_->wb_z, u, hp_.w), m.wb_z[u]);
     }
     bool ok = true;
     for (int i = 0; i < n; i++) {
         r_.digest = (r_.digest ^ rtl[i]) * 1099511628211ull;
         if (rtl[i] == mod[i]) continue;
-        static const char *const names[] = {"frame_done", "rd_x", "rd_y", "phase", "fv", "fec", "uidx", "nidx", "counter"};
-        static const char *const lanes[] = {"wb_valid", "wb_idx", "wb_x", "wb_y"};
-        std::string name = i < 9 ? names[i] : std::string(lanes[(i - 9) % 4]) + "[" + std::to_string((i - 9) / 4) + "]";
+        static const char *const names[] = {"frame_done", "rd_x", "rd_y", "phase", "fv", "fec", "uidx", "nidx", "counter", "rd_z"};
+        static const char *const lanes[] = {"wb_valid", "wb_idx", "wb_x", "wb_y", "wb_z"};
+        std::string name = i < 10 ? names[i] : std::string(lanes[(i - 10) % 5]) + "[" + std::to_string((i - 10) / 5) + "]";
         if (ok && !o_.quiet)
             std::printf("MISMATCH cycle %ld (phase %d, uidx %u, nidx %u, counter %u)\n", cyc_, m.phase, m.uidx, m.nidx, m.counter);
         if (!o_.quiet)
@@ -234,6 +237,7 @@ bool Run::cycle(const cyc_inputs &in) {
     top_->reset = in.reset;
     top_->mouse_x = in.mouse_x;
     top_->mouse_y = in.mouse_y;
+    top_->mouse_z = in.mouse_z;
     top_->mouse_down = in.mouse_down;
     top_->step = in.step;
     top_->cfg_we = in.cfg_we;
@@ -287,7 +291,7 @@ bool Run::setup(cyc_inputs &in) {
         if (!cycle(in)) return false;
     }
     in = cyc_inputs{};
-    std::vector<hw_write> writes(4096 + 16);
+    std::vector<hw_write> writes(65536);
     {
         sim_fx tmp;
         sim_fx_init(&tmp, &sc_, &sc_.fmt);
@@ -337,6 +341,7 @@ Result Run::go(int frames) {
         noise(in);
         in.mouse_x = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[0]));
         in.mouse_y = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[1]));
+        in.mouse_z = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[2]));
         in.mouse_down = sc_.en_mouse && down;
         in.step = true;
         long start = cyc_;
@@ -366,16 +371,14 @@ Result Run::go(int frames) {
         r_.frames = f + 1;
         if (!model_on_) continue;
         sim_dbl_frame(&dbl);
-        std::vector<double> frame_pos;
+        std::vector<double> frame_pos; // x, y, z of every node (z = 0 in 2D)
         for (int i = 0; i < n; i++)
-            for (int a = 0; a < 2; a++) frame_pos.push_back(fx_to_double(&sc_.fmt, model_.s.pos[i][a]));
+            for (int a = 0; a < 3; a++) frame_pos.push_back(fx_to_double(&sc_.fmt, model_.s.pos[i][a]));
         if (!o_.png_dir.empty()) { // one picture per frame (make movie)
             if (f == 0) render_view_fit(&view_, &sc_, frames);
-            std::vector<double> p3((size_t)n * 3, 0.0);
-            for (int i = 0; i < n; i++) p3[(size_t)3 * i] = frame_pos[(size_t)2 * i], p3[(size_t)3 * i + 1] = frame_pos[(size_t)2 * i + 1];
             char path[1024];
             std::snprintf(path, sizeof path, "%s/frame_%05d.png", o_.png_dir.c_str(), f + 1);
-            render_png(&sc_, &view_, reinterpret_cast<double (*)[3]>(p3.data()), f + 1, path);
+            render_png(&sc_, &view_, reinterpret_cast<double (*)[3]>(frame_pos.data()), f + 1, path);
         }
         r_.final_pos.push_back(frame_pos);
         if (r_.final_pos.size() > 1 && o_.csv.empty()) r_.final_pos.erase(r_.final_pos.begin());
@@ -441,10 +444,12 @@ int main(int argc, char **argv) {
     hw_params_of(&sc, &hp);
     const int built[] = {STRAND_W, STRAND_F, STRAND_M, STRAND_K, STRAND_SQRT_BITS, STRAND_DIV_BITS, STRAND_ITER, STRAND_SUBSTEPS,
                          STRAND_EN_GRAVITY, STRAND_EN_DAMPING, STRAND_EN_MOUSE, STRAND_EN_CONSTRAINTS, STRAND_RULE,
-                         STRAND_EN_SPRINGS, STRAND_EN_GROUND, STRAND_GROUND_AXIS, STRAND_GROUND_ABOVE};
+                         STRAND_EN_SPRINGS, STRAND_EN_GROUND, STRAND_GROUND_AXIS, STRAND_GROUND_ABOVE,
+                         STRAND_DIM, STRAND_GRAPH, STRAND_E_RODS, STRAND_E_SPRINGS};
     const int wanted[] = {hp.w, hp.f, hp.m, hp.k, hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps,
                           hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints, hp.rule,
-                          hp.en_springs, hp.en_ground, hp.ground_axis, hp.ground_above};
+                          hp.en_springs, hp.en_ground, hp.ground_axis, hp.ground_above,
+                          hp.dim, hp.graph, hp.e_rods, hp.e_springs};
     if (std::memcmp(built, wanted, sizeof built) != 0) {
         std::fprintf(stderr, "%s:1: this harness was built for another scene's parameters; build it for this one (make sim SCENE=%s)\n",
                      sc.path, sc.path);
@@ -490,18 +495,19 @@ int main(int argc, char **argv) {
     if (!o.csv.empty()) {
         FILE *f = std::fopen((o.csv + ".tmp").c_str(), "w");
         if (f) {
-            std::fprintf(f, "frame,node,x,y\n");
+            std::fprintf(f, sc.dim == 3 ? "frame,node,x,y,z\n" : "frame,node,x,y\n");
             for (size_t fr = 0; fr < r.final_pos.size(); fr++)
-                for (int i = 0; i < sc.n_nodes; i++)
-                    std::fprintf(f, "%zu,%d,%.9g,%.9g\n", fr + 1, i, r.final_pos[fr][(size_t)2 * i], r.final_pos[fr][(size_t)2 * i + 1]);
+                for (int i = 0; i < sc.n_nodes; i++) {
+                    const double *q = &r.final_pos[fr][(size_t)3 * i];
+                    if (sc.dim == 3) std::fprintf(f, "%zu,%d,%.9g,%.9g,%.9g\n", fr + 1, i, q[0], q[1], q[2]);
+                    else std::fprintf(f, "%zu,%d,%.9g,%.9g\n", fr + 1, i, q[0], q[1]);
+                }
             if (std::fclose(f) == 0) std::rename((o.csv + ".tmp").c_str(), o.csv.c_str());
         }
     }
     if (!o.png.empty() && !r.final_pos.empty()) {
         render_view view;
-        std::vector<double> p((size_t)sc.n_nodes * 3, 0.0);
-        const std::vector<double> &last = r.final_pos.back();
-        for (int i = 0; i < sc.n_nodes; i++) p[(size_t)3 * i] = last[(size_t)2 * i], p[(size_t)3 * i + 1] = last[(size_t)2 * i + 1];
+        std::vector<double> p = r.final_pos.back();
         render_view_fit(&view, &sc, frames);
         render_png(&sc, &view, reinterpret_cast<double (*)[3]>(p.data()), frames, o.png.c_str());
     }

@@ -26,19 +26,21 @@ module tb_top_frames;
     localparam integer NCONFIG = `STRAND_NCONFIG;
     localparam integer UW = M > 1 ? $clog2(M) : 1;
     localparam integer IW = K > 1 ? $clog2(K) : 1;
-    localparam integer CW = $clog2(M * K + 1);
+    localparam integer NE = N > `STRAND_E_RODS ? (N > `STRAND_E_SPRINGS ? N : `STRAND_E_SPRINGS)
+                                               : (`STRAND_E_RODS > `STRAND_E_SPRINGS ? `STRAND_E_RODS : `STRAND_E_SPRINGS);
+    localparam integer CW = $clog2(NE + 1);  // as strand_top derives it
     localparam integer TIMEOUT = 4 * `STRAND_CYCLES_PER_FRAME; // cycles a frame may take before we give up
 
     reg clk = 1'b0;
     reg reset = 1'b1;
-    reg [W-1:0] mouse_x = 0, mouse_y = 0;
+    reg [W-1:0] mouse_x = 0, mouse_y = 0, mouse_z = 0;
     reg mouse_down = 1'b0;
     reg step = 1'b0;
     reg cfg_we = 1'b0;
     reg [`STRAND_REG_ADDR_BITS-1:0] cfg_addr = 0;
     reg [W-1:0] cfg_data = 0;
     reg [UW+IW-1:0] rd_addr = 0;
-    wire [W-1:0] rd_x, rd_y;
+    wire [W-1:0] rd_x, rd_y, rd_z;
     wire frame_done, fv, fec;
     wire [2:0] phase;
     wire [UW-1:0] uidx;
@@ -46,37 +48,38 @@ module tb_top_frames;
     wire [CW-1:0] counter;
     wire [M-1:0] wb_valid;
     wire [M*IW-1:0] wb_idx;
-    wire [M*W-1:0] wb_x, wb_y;
+    wire [M*W-1:0] wb_x, wb_y, wb_z;
 
     strand_top #(
         .W(`STRAND_W), .F(`STRAND_F), .M(M), .K(K), .SQRT_BITS(`STRAND_SQRT_BITS), .DIV_BITS(`STRAND_DIV_BITS),
         .ITER(`STRAND_ITER), .SUBSTEPS(`STRAND_SUBSTEPS), .EN_GRAVITY(`STRAND_EN_GRAVITY),
         .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE),
         .EN_SPRINGS(`STRAND_EN_SPRINGS), .EN_GROUND(`STRAND_EN_GROUND),
-        .GROUND_AXIS(`STRAND_GROUND_AXIS), .GROUND_ABOVE(`STRAND_GROUND_ABOVE)
+        .GROUND_AXIS(`STRAND_GROUND_AXIS), .GROUND_ABOVE(`STRAND_GROUND_ABOVE),
+        .DIM(`STRAND_DIM), .GRAPH(`STRAND_GRAPH), .E_RODS(`STRAND_E_RODS), .E_SPRINGS(`STRAND_E_SPRINGS)
     ) dut (
-        .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_down(mouse_down),
+        .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_z(mouse_z), .mouse_down(mouse_down),
         .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
-        .rd_addr(rd_addr), .rd_x(rd_x), .rd_y(rd_y), .phase(phase), .fv(fv), .fec(fec),
+        .rd_addr(rd_addr), .rd_x(rd_x), .rd_y(rd_y), .rd_z(rd_z), .phase(phase), .fv(fv), .fec(fec),
         .uidx(uidx), .nidx(nidx), .counter(counter),
-        .wb_valid(wb_valid), .wb_idx(wb_idx), .wb_x(wb_x), .wb_y(wb_y));
+        .wb_valid(wb_valid), .wb_idx(wb_idx), .wb_x(wb_x), .wb_y(wb_y), .wb_z(wb_z));
 
     always #5 clk = ~clk;
 
     // No X may reach an output once reset has been applied (every register starts as X here).
     reg checking_x = 1'b0;
     always @(negedge clk)
-        if (checking_x && ^{frame_done, rd_x, rd_y, phase, fv, fec, uidx, nidx, counter, wb_valid, wb_idx, wb_x, wb_y} === 1'bx) begin
+        if (checking_x && ^{frame_done, rd_x, rd_y, rd_z, phase, fv, fec, uidx, nidx, counter, wb_valid, wb_idx, wb_x, wb_y, wb_z} === 1'bx) begin
             $display("FAIL tb_top_frames: an output is X at time %0t after reset", $time);
             $fatal(1);
         end
 
     reg [39:0]  config_mem [0:NCONFIG-1];
-    reg [31:0]  mouse_mem  [0:3*FRAMES-1];
-    reg [31:0]  expect_mem [0:2*N*FRAMES-1];
+    reg [31:0]  mouse_mem  [0:4*FRAMES-1];     // per frame: button, x, y, z
+    reg [31:0]  expect_mem [0:3*N*FRAMES-1];   // per frame and node: x, y, z
 
     integer frame, node, cycles, errors;
-    reg [W-1:0] want_x, want_y;
+    reg [W-1:0] want_x, want_y, want_z;
 
     task automatic fail(input [8*64-1:0] why);
         begin
@@ -98,7 +101,7 @@ module tb_top_frames;
         repeat (3) @(posedge clk);
         #1 reset = 1'b0;
         checking_x = 1'b1;
-        // the setup: constants, pins, then CMD init
+        // the setup: constants, pins, then the nodes (CMD init, or NODE loads) and the edges
         for (node = 0; node < NCONFIG; node = node + 1) begin
             #1 cfg_we = 1'b1;
             cfg_addr = config_mem[node][32 +: `STRAND_REG_ADDR_BITS];
@@ -110,13 +113,14 @@ module tb_top_frames;
         while (phase != 3'd0 || cycles == 0) begin
             @(posedge clk);
             cycles = cycles + 1;
-            if (cycles > N + 4) fail("the init walk did not end");
+            if (cycles > N + 4) fail("the setup did not end");
         end
 
         for (frame = 0; frame < FRAMES; frame = frame + 1) begin
-            #1 mouse_down = mouse_mem[3 * frame][0];
-            mouse_x = mouse_mem[3 * frame + 1][W-1:0];
-            mouse_y = mouse_mem[3 * frame + 2][W-1:0];
+            #1 mouse_down = mouse_mem[4 * frame][0];
+            mouse_x = mouse_mem[4 * frame + 1][W-1:0];
+            mouse_y = mouse_mem[4 * frame + 2][W-1:0];
+            mouse_z = mouse_mem[4 * frame + 3][W-1:0];
             step = 1'b1;
             @(posedge clk);
             #1 step = 1'b0;
@@ -139,11 +143,12 @@ module tb_top_frames;
                 rd_addr = ((node / K) << IW) | (node % K);
                 @(posedge clk);
                 #1;
-                want_x = expect_mem[2 * (frame * N + node)][W-1:0];
-                want_y = expect_mem[2 * (frame * N + node) + 1][W-1:0];
-                if (rd_x !== want_x || rd_y !== want_y) begin
-                    $display("FAIL tb_top_frames: frame %0d node %0d: rtl (%h, %h) model (%h, %h)", frame + 1, node,
-                             rd_x, rd_y, want_x, want_y);
+                want_x = expect_mem[3 * (frame * N + node)][W-1:0];
+                want_y = expect_mem[3 * (frame * N + node) + 1][W-1:0];
+                want_z = `STRAND_DIM == 3 ? expect_mem[3 * (frame * N + node) + 2][W-1:0] : {W{1'b0}};
+                if (rd_x !== want_x || rd_y !== want_y || rd_z !== want_z) begin
+                    $display("FAIL tb_top_frames: frame %0d node %0d: rtl (%h, %h, %h) model (%h, %h, %h)", frame + 1, node,
+                             rd_x, rd_y, rd_z, want_x, want_y, want_z);
                     $fatal(1);
                 end
             end
