@@ -78,8 +78,8 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->prev = calloc((size_t)n, sizeof *sc->prev);
     sc->pinned = calloc((size_t)n, sizeof *sc->pinned);
     if (!sc->pos || !sc->prev || !sc->pinned || !sim_fx_init(&c->s, sc, &sc->fmt)) return false;
-    c->lt = hp->sqrt_bits + hp->div_bits + 9;
-    c->ls = hp->sqrt_bits + 2 * hp->div_bits + 15;
+    c->lt = hp->sqrt_bits + hp->div_bits + 2 * hp->dim + 5;                     /* toward.v */
+    c->ls = hp->sqrt_bits + hp->dim * hp->div_bits + 5 * hp->dim + 5;           /* spring_force.v */
     return true;
 }
 
@@ -102,7 +102,9 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     o->rd_z = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_z[c->rd_u_q]) : 0;
     o->phase = c->phase;
     o->fv = c->done;
-    o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == m * c->hp.k - (c->hp.rule ? 1 : 0);
+    /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
+    const int fec_at = c->hp.graph ? c->hp.e_rods : m * c->hp.k - (c->hp.rule ? 1 : 0);
+    o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == fec_at;
     /* strand_top shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
     if (c->phase == PH_FORCE) {
         o->uidx = (uint32_t)c->force.uidx;
