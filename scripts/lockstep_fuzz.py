@@ -68,13 +68,18 @@ def read_build(path):
 def random_build(rng):
     w = rng.choice([12, 16, 18, 20, 24, 32])
     f = rng.randint(max(2, w // 3), w - 5)
-    return {"width": w, "frac": f, "units": rng.randint(1, 4), "nodes_per_unit": rng.randint(1, 6),
+    b = {"width": w, "frac": f, "units": rng.randint(1, 4), "nodes_per_unit": rng.randint(1, 6),
             "sqrt_bits": rng.randint(max(3, w // 2), w - 1), "div_bits": rng.randint(max(3, w // 2), w - 1),
             "iterations": rng.randint(1, 3), "substeps": rng.randint(1, 2),
             "gravity": rng.random() < 0.8, "damping": rng.random() < 0.4, "mouse": rng.random() < 0.7,
             "constraints": rng.random() < 0.85, "rule": rng.choice(["centred", "pairwise"]),
             "springs": rng.random() < 0.4, "ground": rng.random() < 0.3, "ground_axis": rng.randint(0, 1),
-            "ground_above": rng.random() < 0.5}
+            "ground_above": rng.random() < 0.5, "dim": rng.choice([2, 2, 3]), "graph": rng.random() < 0.3}
+    if b["graph"]:
+        b["rule"] = "pairwise"  # a graph has no chain to walk
+    if b["dim"] == 3 and rng.random() < 0.4:
+        b["ground_axis"] = 2    # the floor of a 3D scene
+    return b
 
 
 def builds_for(seed, extra):
@@ -83,34 +88,51 @@ def builds_for(seed, extra):
 
 
 def scene_text(build, seed):
-    """A valid scene for `build`, its run-time values drawn from `seed`."""
+    """A valid scene for `build`, its run-time values drawn from `seed`: a chain or a graph, 2D or 3D."""
     rng = random.Random(f"scene-{seed}")
     w, f = build["width"], build["frac"]
+    dim = build.get("dim", 2)
+    graph = build.get("graph", False)
     span = 2.0 ** (w - f - 1)           # the format's range is +-span
     lsb = 2.0 ** -f
     n = build["units"] * build["nodes_per_unit"]
+    if graph:
+        n = max(n, 2)
     reach = span / 4                    # keep the body well inside the range
-    step = [rng.uniform(-1, 1) * reach / max(n, 1) for _ in range(2)]
+    vec = lambda v: " ".join(f"{x:.6f}" for x in v[:dim])
+    step = [rng.uniform(-1, 1) * reach / max(n, 1) for _ in range(3)]
     if rng.random() < 0.1:
-        step = [0.0, 0.0]               # every node on one point: zero lengths
-    start = [rng.uniform(-reach, reach) - step[0] * n / 2, rng.uniform(-reach, reach) - step[1] * n / 2]
-    rest = max(abs(step[0]) + abs(step[1]), 64 * lsb) * rng.uniform(0.5, 1.6)
+        step = [0.0, 0.0, 0.0]          # every node on one point: zero lengths
+    start = [rng.uniform(-reach, reach) - step[k] * n / 2 for k in range(3)]
+    rest = max(sum(abs(x) for x in step[:dim]), 64 * lsb) * rng.uniform(0.5, 1.6)
     frames = rng.randint(3, 10)
-    lines = [f"; random scene, seed {seed}", "[scene]", f"name = fuzz_{seed}",
+    lines = [f"; random scene, seed {seed}", "[scene]", f"name = fuzz_{seed}", f"dim = {dim}",
              "[format]", f"width = {w}", f"frac = {f}", f"sqrt_bits = {build['sqrt_bits']}", f"div_bits = {build['div_bits']}",
              "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['substeps']}", f"iterations = {build['iterations']}"]
     if build["damping"]:
         lines.append(f"damping = {rng.uniform(lsb * 4, 0.3):.6f}")
-    lines += ["[chain]", f"units = {build['units']}", f"nodes_per_unit = {build['nodes_per_unit']}",
-              f"start = {start[0]:.6f} {start[1]:.6f}", f"step = {step[0]:.6f} {step[1]:.6f}", f"rest = {rest:.6f}"]
     pins = sorted(rng.sample(range(n), rng.randint(0, min(3, n))))
+    nodes = [[start[k] + i * step[k] + (rng.uniform(-1, 1) * rest / 2 if graph else 0) for k in range(3)] for i in range(n)]
+    if graph:
+        # nodes near a line, so lengths stay small; edges between random pairs, every node on one
+        lines += ["[graph]"]
+        lines += [f"node = {vec(p)}" for p in nodes]
+        kinds = (["rod", "strut"] if build["constraints"] else []) + (["spring"] if build.get("springs") else [])
+        pairs = [(i, i + 1) for i in range(n - 1)] + [tuple(rng.sample(range(n), 2)) for _ in range(rng.randint(0, n))]
+        if kinds:
+            for i, (a, b) in enumerate(pairs):
+                rest_e = f" {rng.uniform(0.5, 1.5) * rest:.6f}" if rng.random() < 0.5 else ""
+                lines.append(f"edge = {a} {b} {kinds[i % len(kinds)]}{rest_e}")
+    else:
+        lines += ["[chain]", f"units = {build['units']}", f"nodes_per_unit = {build['nodes_per_unit']}",
+                  f"start = {vec(start)}", f"step = {vec(step)}", f"rest = {rest:.6f}"]
     if pins:
         lines.append("pinned = " + " ".join(map(str, pins)))
-    if rng.random() < 0.3:  # the whole chain starts moving
-        lines.append(f"velocity = {rng.uniform(-1, 1) * reach / 20:.6f} {rng.uniform(-1, 1) * reach / 20:.6f}")
+    if rng.random() < 0.3:  # the whole body starts moving
+        lines.append(f"velocity = {vec([rng.uniform(-1, 1) * reach / 20 for _ in range(3)])}")
     if build["gravity"]:
         g = rng.uniform(0, reach / 50) * build["substeps"] ** 2
-        lines += ["[gravity]", f"accel = {rng.uniform(-0.3, 0.3) * g:.6f} {-g:.6f}"]
+        lines += ["[gravity]", f"accel = {vec([rng.uniform(-0.3, 0.3) * g, -g, rng.uniform(-0.3, 0.3) * g])}"]
     if build["constraints"]:
         lines += ["[constraints]", f"rule = {build['rule']}"]
     if build.get("springs"):
@@ -121,20 +143,18 @@ def scene_text(build, seed):
         # a boundary through the body, so that nodes hit it from the start
         ax = build["ground_axis"]
         mid = start[ax] + step[ax] * n / 2
-        normal = ("+" if build["ground_above"] else "-") + "xy"[ax]
+        normal = ("+" if build["ground_above"] else "-") + "xyz"[ax]
         lines += ["[ground]", f"normal = {normal}", f"level = {mid + rng.uniform(-1, 1) * abs(step[ax]) * n / 2:.6f}",
                   f"radius = {rng.uniform(0, 4 * lsb):.6f}", f"friction = {rng.uniform(0, 1):.4f}"]
     if build["mouse"]:
         box = min(rng.uniform(rest, 4 * rest + 8 * lsb), reach)
-        lines += ["[mouse]", f"box = {box:.6f} {box:.6f}", f"impulse = {rng.uniform(-rest, rest):.6f}"]
+        lines += ["[mouse]", f"box = {vec([box] * 3)}", f"impulse = {rng.uniform(-rest, rest):.6f}"]
         frame = 0
         while frame < frames:
-            x = rng.uniform(-reach, reach)
-            y = rng.uniform(-reach, reach)
+            p = [rng.uniform(-reach, reach) for _ in range(3)]
             if rng.random() < 0.5 and n:         # aim at a node's start
-                i = rng.randrange(n)
-                x, y = start[0] + i * step[0], start[1] + i * step[1]
-            lines.append(f"event = {frame} {x:.6f} {y:.6f} {rng.randint(0, 1)}")
+                p = nodes[rng.randrange(n)]
+            lines.append(f"event = {frame} {vec(p)} {rng.randint(0, 1)}")
             frame += rng.randint(1, 3)
     return "\n".join(lines) + "\n"
 
