@@ -13,6 +13,9 @@ shift 2
 build=${BUILD:-build}
 root=$(pwd)
 mkdir -p "$out"
+# one build of a directory at a time (two runs may want the same harness at once)
+exec 9>"$out.lock"
+flock 9
 "$build/strand" hwgen "$scene" "$out.gen" --frames 1 >/dev/null
 # rebuild only when the build parameters, the defines or a source changed
 stamp="$(cat "$out.gen/params.vh" | grep -v Generated) $* $(cat rtl/*.v tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
