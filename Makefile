@@ -39,7 +39,8 @@ LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
              "-GEN_GROUND=1'b1 -GGROUND_AXIS=0 -GGROUND_ABOVE=1'b0 -GEN_CONSTRAINTS=1'b0" "-GEN_GROUND=1'b1 -GEN_SPRINGS=1'b1 -GRULE=1" \
              "-GDIM=3 -GEN_DAMPING=1'b1 -GEN_GROUND=1'b1 -GGROUND_AXIS=2" \
              "-GDIM=3 -GGRAPH=1'b1 -GE_RODS=6 -GE_SPRINGS=24 -GM=1 -GK=12 -GRULE=1 -GEN_SPRINGS=1'b1 -GEN_GROUND=1'b1 -GGROUND_AXIS=2" \
-             "-GGRAPH=1'b1 -GE_RODS=1 -GE_SPRINGS=3 -GM=2 -GK=2 -GRULE=1 -GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8"
+             "-GGRAPH=1'b1 -GE_RODS=1 -GE_SPRINGS=3 -GM=2 -GK=2 -GRULE=1 -GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8" \
+             "-GGRAB=1'b1 -GM=3 -GK=3" "-GGRAB=1'b1 -GDIM=3 -GEN_GROUND=1'b1 -GRULE=1 -GM=1 -GK=1"
 
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
@@ -140,10 +141,10 @@ LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_ro
                    sim/scenes/hard_mouse_impulse.scene:40 sim/scenes/ref004_chain.scene:60 sim/scenes/hard_stiff_k10000.scene:40 \
                    sim/scenes/ref002_verlet_springs.scene:2 sim/scenes/hard_ground_impact.scene:300 \
                    sim/scenes/ref001_video1.scene:100 sim/scenes/ref001_video2.scene:300 sim/scenes/ref001_video3.scene:300 \
-                   sim/scenes/ref001_video4.scene:300 sim/scenes/spring_pair.scene:240
+                   sim/scenes/ref001_video4.scene:300 sim/scenes/spring_pair.scene:240 sim/scenes/hard_mouse_grab.scene:300
 # Every hard case the RTL supports (issue F), in lockstep: make lockstep-hard (longer; not in make test).
 HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 hard_many_iterations:10 \
-            hard_stiff_k1000:200 hard_stiff_k10000:200 hard_ground_impact \
+            hard_stiff_k1000:200 hard_stiff_k10000:200 hard_ground_impact hard_mouse_grab:2000 \
             hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
 
 # make test: the RTL and reference scenes, the planted faults, random initial values, 50 random scenes

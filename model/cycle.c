@@ -46,7 +46,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->mass = 1;
     sc->en_gravity = hp->en_gravity;
     sc->en_mouse = hp->en_mouse;
-    sc->mouse = MOUSE_IMPULSE;
+    sc->mouse = hp->grab ? MOUSE_GRAB : MOUSE_IMPULSE;
     sc->en_constraints = hp->en_constraints;
     sc->rule = hp->rule ? RULE_PAIRWISE : RULE_CENTRED;
     sc->en_springs = hp->en_springs;
@@ -147,6 +147,8 @@ static void reset_all(cyc_model *c)
     memset(&c->pair, 0, sizeof c->pair);   /* PQ_IDLE, counters 0 */
     memset(&c->force, 0, sizeof c->force);
     c->s.mouse_down = false;
+    c->s.grabbed = -1;
+    c->scan_i = 0;
     c->phase = PH_IDLE;
     c->substep = 0;
     c->frame_done = false;
@@ -328,7 +330,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool ground_start = body_end && hp->en_ground;
     const bool substep_end = hp->en_ground ? c->phase == PH_GROUND && c->done : body_end;
     const bool last_substep = c->substep == hp->substeps - 1;
-    const bool substep_start = frame_start || (substep_end && !last_substep);
+    const bool scan_end = hp->grab && c->phase == PH_GRAB && c->scan_i == n;
+    const bool substep_start = (hp->grab ? scan_end : frame_start) || (substep_end && !last_substep);
     const bool force_start = substep_start && hp->en_springs;
     const bool verlet_start = (substep_start && !hp->en_springs) || (c->phase == PH_FORCE && force_done);
     const bool seq_start = verlet_end && hp->en_constraints;
@@ -374,7 +377,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;
             if (sim_fx_verlet_node(&c->s, node)) {
-                if (hp->en_mouse) sim_fx_mouse_node(&c->s, node);
+                if (hp->en_mouse && !hp->grab) sim_fx_mouse_node(&c->s, node);
                 lane_write(c, written, u, c->vidx, node);
             }
             /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
@@ -466,7 +469,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->init_u = c->init_n = c->init_count = 0;
             for (int a = 0; a < 3; a++) c->init_pos[a] = a < hp->dim ? c->start[a] : 0;
         } else if (in->step) {
-            c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
+            c->phase = hp->grab ? PH_GRAB : hp->en_springs ? PH_FORCE : PH_VERLET;
+            c->scan_i = 0;
             c->substep = 0;
             c->mouse_q[0] = from_word(f, in->mouse_x);
             c->mouse_q[1] = from_word(f, in->mouse_y);
@@ -488,6 +492,16 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         break;
     case PH_FORCE:
         if (force_done) c->phase = PH_VERLET;
+        break;
+    case PH_GRAB: /* strand_top g_grab: the scan ends by grabbing or releasing (grab_update) */
+        if (scan_end) {
+            for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
+            c->s.mouse_down = c->mouse_down_q;
+            sim_fx_grab_update(&c->s);
+            c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
+        } else {
+            c->scan_i++;
+        }
         break;
     case PH_VERLET:
         if (seq_start) c->phase = PH_CONSTRAIN;

@@ -25,7 +25,7 @@ extern "C" {
 
 #define CYC_MAX_UNITS 256
 
-enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4, PH_GROUND = 5 };
+enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4, PH_GROUND = 5, PH_GRAB = 6 };
 enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
 enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };                 /* pair_sequencer */
 
@@ -73,6 +73,7 @@ typedef struct {
 
     /* strand_top */
     int phase, substep;
+    int scan_i;  /* the grab scan: nodes addressed so far */
     bool frame_done;
     fx_t mouse_q[3];
     bool mouse_down_q;

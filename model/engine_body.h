@@ -92,22 +92,20 @@ static bool P(in_touch)(const SIM *s, int i)
     return true;
 }
 
-void P(begin_frame)(SIM *s)
+/*
+ * The grab form of the mouse, with the pointer already sampled into s->mouse and
+ * s->mouse_down: the button up releases the grabbed node; pressed with no node held,
+ * the nearest free node inside the box (L1 distance, a saturating sum over the axes;
+ * the lowest index on ties) is taken. The RTL's GRAB phase scans the nodes in this
+ * order with these operations.
+ */
+void P(grab_update)(SIM *s)
 {
-    const scene *sc = s->sc;
-    double m[3];
-    bool down;
-    if (!sc->en_mouse) return;
-    scene_mouse_at(sc, s->frame, m, &down);
-    for (int k = 0; k < 3; k++) s->mouse[k] = FROM(m[k]);
-    s->mouse_down = down;
-    if (sc->mouse != MOUSE_GRAB) return;
-    if (!down) {
+    if (!s->mouse_down) {
         s->grabbed = -1;
         return;
     }
     if (s->grabbed >= 0) return;
-    /* Button pressed: take the nearest free node inside the box (L1 distance, lowest index on ties). */
     NUM best = FROM(0);
     for (int i = 0; i < s->n; i++) {
         if (P(node_pinned)(s, i) || !P(in_touch)(s, i)) continue;
@@ -118,6 +116,18 @@ void P(begin_frame)(SIM *s)
             best = d;
         }
     }
+}
+
+void P(begin_frame)(SIM *s)
+{
+    const scene *sc = s->sc;
+    double m[3];
+    bool down;
+    if (!sc->en_mouse) return;
+    scene_mouse_at(sc, s->frame, m, &down);
+    for (int k = 0; k < 3; k++) s->mouse[k] = FROM(m[k]);
+    s->mouse_down = down;
+    if (sc->mouse == MOUSE_GRAB) P(grab_update)(s);
 }
 
 /*

@@ -26,7 +26,6 @@ static const char *reject(const scene *sc, const char *section, char *err, size_
 const char *hw_check(const scene *sc, char *err, size_t len)
 {
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
-    if (sc->en_mouse && sc->mouse != MOUSE_IMPULSE) return reject(sc, "mouse", err, len, "the grab form of the mouse");
     if (sc->body == BODY_GRAPH) {
         hw_params hp;
         hw_params_of(sc, &hp);
@@ -78,6 +77,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->en_gravity = sc->en_gravity;
     hp->en_damping = sc->damping > 0;
     hp->en_mouse = sc->en_mouse;
+    hp->grab = sc->en_mouse && sc->mouse == MOUSE_GRAB;
     hp->en_constraints = sc->en_constraints && (!hp->graph || hp->e_rods > 0);
     hp->rule = sc->rule == RULE_PAIRWISE ? 1 : 0;
     hp->en_springs = sc->en_springs && (!hp->graph || hp->e_springs > 0);
@@ -115,7 +115,8 @@ long hw_cycles_per_frame(const hw_params *hp)
     long substep = hp->en_constraints ? hp->k + 2 + hp->iter * pass : hp->k + 1;
     if (hp->en_springs) substep += 1 + springs * (spring + 5); /* the spring pass: every link, as pairwise */
     if (hp->en_ground) substep += hp->k + 1;                    /* the ground pass: every node of a unit */
-    return hp->substeps * substep + 1;
+    /* the grab scan at the frame's start: every node, one a cycle, and one more */
+    return hp->substeps * substep + 1 + (hp->grab ? n + 1 : 0);
 }
 
 int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
@@ -247,6 +248,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.ground_axis, hp.ground_above);
         fprintf(f, "`define STRAND_DIM %d\n`define STRAND_GRAPH 1'b%d\n`define STRAND_E_RODS %d\n`define STRAND_E_SPRINGS %d\n",
                 hp.dim, hp.graph, hp.e_rods, hp.e_springs);
+        fprintf(f, "`define STRAND_GRAB 1'b%d\n", hp.grab);
         fprintf(f, "`define STRAND_FRAMES %d\n`define STRAND_NCONFIG %d\n`define STRAND_CYCLES_PER_FRAME %ld\n", frames, nw,
                 hw_cycles_per_frame(&hp));
         ok = fclose(f) == 0;
@@ -263,6 +265,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                 hp.ground_axis, hp.ground_above);
         fprintf(f, "#define STRAND_DIM %d\n#define STRAND_GRAPH %d\n#define STRAND_E_RODS %d\n#define STRAND_E_SPRINGS %d\n", hp.dim,
                 hp.graph, hp.e_rods, hp.e_springs);
+        fprintf(f, "#define STRAND_GRAB %d\n", hp.grab);
         ok = fclose(f) == 0;
     } else ok = false;
     if (ok && (f = open_in(dir, "config.hex", err, len))) {

@@ -25,6 +25,7 @@ typedef struct {
     int dim;    /* 2 or 3 */
     bool graph; /* a graph body: edge memories (e_rods, e_springs entries), nodes loaded one by one */
     int e_rods, e_springs;
+    bool grab;  /* the mouse's grab form (EN_MOUSE with GRAB) */
     int uw, iw, cw; /* derived widths, as strand_top computes them */
 } hw_params;
 

@@ -57,6 +57,7 @@ typedef struct sim_dbl {
     void P##frame(SIM *s);                                                                               \
     /* The steps of a frame, in order, for the cycle model. */                                          \
     void P##begin_frame(SIM *s);     /* sample the mouse; grab or release a node */                     \
+    void P##grab_update(SIM *s);     /* grab or release a node for the sampled pointer */              \
     void P##spring_edge(SIM *s, int e);  /* accumulate one spring's force on its ends */                \
     bool P##verlet_node(SIM *s, int i);  /* Verlet step of one node (or follow the pointer); false if pinned */ \
     void P##mouse_node(SIM *s, int i);   /* mouse impulse on one node, after its Verlet step */         \

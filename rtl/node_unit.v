@@ -9,8 +9,11 @@
  * model/engine_body.h verlet_node() and then mouse_node():
  *     v  = x - px;  v = v - v*d (EN_DAMPING);  px = x;  x = x + v;  x = x + g h^2 (EN_GRAVITY)
  *     x = x + acc (EN_SPRINGS: the spring force of this substep, then acc = 0)
- *     mouse (EN_MOUSE, button down, |mouse - x| < box on both axes):
+ *     mouse (EN_MOUSE, button down, |mouse - x| < box on every axis):
  *         px.x = (mouse.x < px.x) ? x.x + a : x.x - a
+ *     grab (EN_MOUSE and GRAB; the top says which node is held): the held node is put
+ *         on the pointer, px = its old x; it counts as pinned for the constraints
+ *         and the ground
  * A ground pass (EN_GROUND, started by ground_start) walks the nodes the same way
  * with model/engine_body.h ground_node(): a node past the boundary b on the normal
  * axis n is put on it, its velocity along n reversed and, on the other axis o, its
@@ -42,6 +45,7 @@ module node_unit #(
     parameter integer GROUND_AXIS = 1,   // the ground's normal axis: 0 x, 1 y, 2 z (DIM = 3)
     parameter [0:0]  GROUND_ABOVE = 1'b1, // 1: nodes stay at or above the boundary on that axis, 0: below
     parameter integer DIM        = 2,    // 2, or 3: a z lane (storage and datapath)
+    parameter [0:0]  GRAB       = 1'b0, // with EN_MOUSE: the grab form (the held node follows the pointer)
     /* verilator lint_off UNUSEDPARAM */
     // read only by the test-only planted fault (STRAND_FAULTS)
     parameter integer UNIT_ID  = 0      // this unit's number
@@ -68,12 +72,14 @@ module node_unit #(
     input  wire [W-1:0]  mouse_y,
     input  wire [W-1:0]  mouse_z,
     input  wire          mouse_down,
+    input  wire          grab_here,    // GRAB: this unit holds the grabbed node,
+    input  wire [IW-1:0] grab_idx,     //   this one
 
     // port A between passes: the sequencer's reads, the sequencer's and init's writes
     input  wire [IW-1:0] a_idx,        // node to read; x, y, pinned appear next cycle
     output wire [W-1:0]  a_x,
     output wire [W-1:0]  a_y,
-    output wire          a_pinned,
+    output wire          a_pinned,     // pinned, or grabbed (constraints do not move it)
     output wire [W-1:0]  a_px,         // previous position (the spring pass's velocities)
     output wire [W-1:0]  a_py,
     output wire [W-1:0]  a_accx,       // the spring force gathered so far (EN_SPRINGS; else 0)
@@ -190,7 +196,7 @@ module node_unit #(
     // while node vidx is written.
     wire [IW-1:0] a_addr = pass_start ? {IW{1'b0}} : running_q ? vidx_q + 1'b1 : a_idx;
     reg  [W-1:0]  q_x, q_y, q_px, q_py;
-    reg           q_pin;
+    reg           q_pin, q_grab;
 
     always @(posedge clk) begin
         if ({1'b0, a_addr} < K_COUNT) begin
@@ -199,12 +205,13 @@ module node_unit #(
             q_px  <= px_mem[a_addr];
             q_py  <= py_mem[a_addr];
             q_pin <= pinned_q[a_addr];
+            q_grab <= GRAB && grab_here && a_addr == grab_idx;
         end
     end
 
     assign a_x      = q_x;
     assign a_y      = q_y;
-    assign a_pinned = q_pin;
+    assign a_pinned = q_pin || q_grab;
     assign a_px     = q_px;
     assign a_py     = q_py;
 
@@ -288,7 +295,7 @@ module node_unit #(
     wire [W-1:0] npx;
     wire         touch_z;  // |mouse.z - z| < box.z (DIM = 3; else 1): from g_lane_z
     generate
-        if (EN_MOUSE) begin : g_mouse
+        if (EN_MOUSE && !GRAB) begin : g_mouse
             wire [W-1:0] ddx, ddy, ndx, ndy, px_plus, px_minus;
             fx_add #(.W(W)) u_ddx (.sub(1'b1), .a(mouse_x), .b(nx), .y(ddx), .sat());
             fx_add #(.W(W)) u_ddy (.sub(1'b1), .a(mouse_y), .b(ny), .y(ddy), .sat());
@@ -303,7 +310,7 @@ module node_unit #(
             assign npx = !in_touch ? q_x : ($signed(mouse_x) < $signed(q_x)) ? px_plus : px_minus;
         end else begin : g_no_mouse
             assign npx = q_x;
-            wire unused_mouse = &{1'b0, impulse, box_x, box_y, mouse_x, mouse_y, mouse_down, touch_z};
+            wire unused_mouse = &{1'b0, impulse, box_x, box_y, mouse_down, touch_z};  // the pointer: GRAB's
         end
     endgenerate
 
@@ -362,7 +369,9 @@ module node_unit #(
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- writes: the pass, else port A's writer; pins ----
-    wire          pass_we = running_q && !q_pin && (!ground_q || g_hit);
+    // The grabbed node (GRAB): the Verlet pass puts it on the pointer, px = its old x;
+    // the ground pass leaves it alone.
+    wire          pass_we = running_q && !q_pin && (!ground_q || (g_hit && !q_grab));
     wire          we      = pass_we || w_en;
     wire [IW-1:0] widx    = running_q ? vidx_q : w_idx;
 `ifdef STRAND_FAULTS
@@ -375,13 +384,13 @@ module node_unit #(
         if (reset) fault_writes <= 3'd0;
         else if (pass_we && fault_writes != 3'd7) fault_writes <= fault_writes + 1'b1;
     wire fault_flip = fault_on && UNIT_ID == 0 && pass_we && fault_writes == 3'd4;
-    wire [W-1:0]  wx      = running_q ? (ground_q ? g_x : nx ^ {{(W-1){1'b0}}, fault_flip}) : w_x;
+    wire [W-1:0]  wx      = running_q ? (ground_q ? g_x : q_grab ? mouse_x : nx ^ {{(W-1){1'b0}}, fault_flip}) : w_x;
 `else
-    wire [W-1:0]  wx      = running_q ? (ground_q ? g_x : nx) : w_x;
+    wire [W-1:0]  wx      = running_q ? (ground_q ? g_x : q_grab ? mouse_x : nx) : w_x;
 `endif
-    wire [W-1:0]  wy      = running_q ? (ground_q ? g_y : ny) : w_y;
+    wire [W-1:0]  wy      = running_q ? (ground_q ? g_y : q_grab ? mouse_y : ny) : w_y;
     wire          w_pin   = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
-    wire [W-1:0]  wpx     = running_q ? (ground_q ? g_px : npx) : w_pin ? w_x : w_px;
+    wire [W-1:0]  wpx     = running_q ? (ground_q ? g_px : q_grab ? q_x : npx) : w_pin ? w_x : w_px;
     wire [W-1:0]  wpy     = running_q ? (ground_q ? g_py : q_y) : w_pin ? w_y : w_py;
     wire          wprev   = running_q || w_at_rest;
 
@@ -491,7 +500,7 @@ module node_unit #(
                 wire unused_springs_z = &{1'b0, acc_wz};
             end
             assign a_accz = qaz;
-            if (EN_MOUSE) begin : g_mouse_z
+            if (EN_MOUSE && !GRAB) begin : g_mouse_z
                 wire [W-1:0] ddz, ndz;
                 fx_add #(.W(W)) u_ddz (.sub(1'b1), .a(mouse_z), .b(nz), .y(ddz), .sat());
                 fx_add #(.W(W)) u_ndz (.sub(1'b1), .a({W{1'b0}}), .b(ddz), .y(ndz), .sat());
@@ -499,10 +508,10 @@ module node_unit #(
                 assign touch_z = $signed(adz) < $signed(box_z);
             end else begin : g_no_mouse_z
                 assign touch_z = 1'b1;
-                wire unused_mouse_z = &{1'b0, mouse_z, box_z};
+                wire unused_mouse_z = &{1'b0, box_z};
             end
 
-            wire [W-1:0] wz  = running_q ? (ground_q ? g_z : nz) : w_z;
+            wire [W-1:0] wz  = running_q ? (ground_q ? g_z : q_grab ? mouse_z : nz) : w_z;
             wire [W-1:0] wpz = running_q ? (ground_q ? g_pz : qz) : w_pin ? w_z : w_pz;
             integer i3;
             always @(posedge clk) begin

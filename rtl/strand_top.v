@@ -25,7 +25,12 @@
  * With EN_GROUND, a ground pass ends each substep (phase GROUND; the units walk
  * their nodes as in the Verlet pass, FV rising when all are done).
  *
- * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND. Every phase takes a number of
+ * With EN_MOUSE and GRAB, a frame starts with a GRAB phase: the nodes are scanned in
+ * order ({unit, node}, N + 1 cycles) for the one nearest the pointer inside the box
+ * (model/engine_body.h grab_update()); the held node follows the pointer until the
+ * button is released.
+ *
+ * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND, 6 GRAB. Every phase takes a number of
  * cycles fixed by the parameters (docs/architecture.md gives the formula).
  */
 module strand_top #(
@@ -39,7 +44,8 @@ module strand_top #(
     parameter integer SUBSTEPS       = 1,     // substeps per frame
     parameter [0:0]   EN_GRAVITY     = 1'b1,  // add g h^2
     parameter [0:0]   EN_DAMPING     = 1'b0,  // Verlet damping
-    parameter [0:0]   EN_MOUSE       = 1'b1,  // mouse impulse
+    parameter [0:0]   EN_MOUSE       = 1'b1,  // the mouse: the reference-000 impulse, or (GRAB) the grab form
+    parameter [0:0]   GRAB           = 1'b0,  // with EN_MOUSE: the nearest node in the box follows the pointer
     parameter [0:0]   EN_CONSTRAINTS = 1'b1,  // distance constraints between neighbours
     parameter integer RULE           = 0,     // their rule: 0 centred (reference 000), 1 pairwise (002)
     parameter [0:0]   EN_SPRINGS     = 1'b0,  // damped springs on the links (references 001, 004)
@@ -77,7 +83,7 @@ module strand_top #(
     output wire [W-1:0]    rd_y,
     output wire [W-1:0]    rd_z,        // DIM = 3; else 0
 
-    output reg  [2:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain, 4 force, 5 ground
+    output reg  [2:0]      phase,       // 0 idle, 1 init, 2 verlet, 3 constrain, 4 force, 5 ground, 6 grab
     output wire            fv,          // every unit finished its Verlet (or ground) pass
     output wire            fec,         // the constraint pass finished (counter = M x K)
     output wire [UW-1:0]   uidx,        // the sequencer's C (pairwise and springs: a): unit
@@ -169,13 +175,15 @@ module strand_top #(
     end
 
     localparam [2:0] PH_IDLE = 3'd0, PH_INIT = 3'd1, PH_VERLET = 3'd2, PH_CONSTRAIN = 3'd3, PH_FORCE = 3'd4,
-                     PH_GROUND = 3'd5;
+                     PH_GROUND = 3'd5, PH_GRAB = 3'd6;
+    localparam [0:0] HAS_GRAB = EN_MOUSE && GRAB;
 
     localparam integer K_LAST_I = K - 1;
     localparam integer N_LAST_I = N - 1;
     localparam integer SUB_LAST_I = SUBSTEPS - 1;
     localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];
     localparam [CW-1:0] N_LAST   = N_LAST_I[CW-1:0];
+    localparam [CW-1:0] N_COUNT  = N[CW-1:0];
     localparam [SW-1:0] SUB_LAST = SUB_LAST_I[SW-1:0];
     localparam [UW:0]   M_COUNT  = M[UW:0];
 
@@ -258,7 +266,8 @@ module strand_top #(
     wire body_end      = EN_CONSTRAINTS ? phase == PH_CONSTRAIN && seq_done : verlet_end;
     wire ground_start  = body_end && EN_GROUND;
     wire substep_end   = EN_GROUND ? phase == PH_GROUND && fv : body_end;
-    wire substep_start = frame_start || (substep_end && substep_q != SUB_LAST);
+    wire scan_end;  // GRAB: the scan for the node to hold is over
+    wire substep_start = (HAS_GRAB ? scan_end : frame_start) || (substep_end && substep_q != SUB_LAST);
     wire force_start   = substep_start && EN_SPRINGS;
     wire verlet_start  = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
     wire seq_start     = verlet_end && EN_CONSTRAINTS;
@@ -302,7 +311,7 @@ module strand_top #(
                         init_y     <= start_y;
                         init_z     <= DIM == 3 ? start_z : {W{1'b0}};
                     end else if (step) begin
-                        phase        <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                        phase        <= HAS_GRAB ? PH_GRAB : EN_SPRINGS ? PH_FORCE : PH_VERLET;
                         substep_q    <= {SW{1'b0}};
                         mouse_x_q    <= mouse_x;
                         mouse_y_q    <= mouse_y;
@@ -324,6 +333,7 @@ module strand_top #(
                     if (init_last) phase <= PH_IDLE;
                 end
                 PH_FORCE:     if (force_done) phase <= PH_VERLET;
+                PH_GRAB:      if (scan_end) phase <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
                 PH_VERLET:    if (seq_start) phase <= PH_CONSTRAIN;
                 default:      ;
             endcase
@@ -354,8 +364,11 @@ module strand_top #(
     wire          f_wr_en;
     wire [W-1:0]  f_wr_x, f_wr_y, f_wr_z;
     wire          in_force = phase == PH_FORCE;
-    wire [UW-1:0] seq_rd_u = in_force ? f_rd_u : c_rd_u;
-    wire [IW-1:0] seq_rd_n = in_force ? f_rd_n : c_rd_n;
+    wire [UW-1:0] scan_u;    // GRAB: the node the scan reads
+    wire [IW-1:0] scan_n;
+    wire          in_scan  = HAS_GRAB && phase == PH_GRAB;
+    wire [UW-1:0] seq_rd_u = in_scan ? scan_u : in_force ? f_rd_u : c_rd_u;
+    wire [IW-1:0] seq_rd_n = in_scan ? scan_n : in_force ? f_rd_n : c_rd_n;
     assign uidx    = in_force ? f_uidx : c_uidx;
     assign nidx    = in_force ? f_nidx : c_nidx;
     assign counter = in_force ? f_counter : c_counter;
@@ -451,6 +464,88 @@ module strand_top #(
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
 
+    // ---- GRAB: the scan for the node to hold, and the held node ----
+    // Cycle i of the phase (i = 0 .. N) addresses node i and judges node i - 1, whose
+    // data port A returns now, as model/engine_body.h grab_update() does: inside the box
+    // on every axis, not pinned, and nearer (L1, saturating sum) than the best so far.
+    wire          grab_valid;  // a node is held
+    wire [UW+IW-1:0] grab_a;   // its address
+    generate
+        if (HAS_GRAB) begin : g_grab
+            reg [CW-1:0]    scan_i;        // nodes addressed so far
+            reg [UW+IW-1:0] scan_a;        // node scan_i's address
+            reg [UW+IW-1:0] data_a;        // the address whose data arrives (node scan_i - 1)
+            reg             found, held;
+            reg [W-1:0]     best;
+            reg [UW+IW-1:0] cand, held_a;
+            wire [W-1:0] ddx, ddy, ddz, ndx, ndy, ndz, ax, ay, az, dxy, l1_z, l1;
+            /* verilator lint_off PINCONNECTEMPTY */
+            // saturation flags are not needed: the saturated value is the result
+            fx_add #(.W(W)) u_ddx (.sub(1'b1), .a(mouse_x_q), .b(seq_rd_x), .y(ddx), .sat());
+            fx_add #(.W(W)) u_ddy (.sub(1'b1), .a(mouse_y_q), .b(seq_rd_y), .y(ddy), .sat());
+            fx_add #(.W(W)) u_ddz (.sub(1'b1), .a(mouse_z_q), .b(seq_rd_z), .y(ddz), .sat());
+            fx_add #(.W(W)) u_ndx (.sub(1'b1), .a({W{1'b0}}), .b(ddx), .y(ndx), .sat());  // |min| is max
+            fx_add #(.W(W)) u_ndy (.sub(1'b1), .a({W{1'b0}}), .b(ddy), .y(ndy), .sat());
+            fx_add #(.W(W)) u_ndz (.sub(1'b1), .a({W{1'b0}}), .b(ddz), .y(ndz), .sat());
+            assign ax = ddx[W-1] ? ndx : ddx;
+            assign ay = ddy[W-1] ? ndy : ddy;
+            assign az = ddz[W-1] ? ndz : ddz;
+            fx_add #(.W(W)) u_dxy (.sub(1'b0), .a(ax), .b(ay), .y(dxy), .sat());
+            fx_add #(.W(W)) u_dz  (.sub(1'b0), .a(dxy), .b(az), .y(l1_z), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+            assign l1 = DIM == 3 ? l1_z : dxy;  // the L1 distance
+            wire touch = $signed(ax) < $signed(box_x) && $signed(ay) < $signed(box_y) &&
+                         (DIM != 3 || $signed(az) < $signed(box_z));
+            wire take = scan_i != {CW{1'b0}} && touch && !seq_rd_pin && (!found || $signed(l1) < $signed(best));
+            wire             found_n = found || take;
+            wire [UW+IW-1:0] cand_n  = take ? data_a : cand;
+            wire [IW-1:0]    scan_n_i = scan_a[IW-1:0];
+            // the held node after this cycle: the Verlet pass reads node 0 at the very edge
+            // that ends the scan, so the units see the new value already in that cycle
+            wire             held_n   = scan_end ? mouse_down_q && (held || found_n) : held;
+            wire [UW+IW-1:0] held_a_n = scan_end && mouse_down_q && !held && found_n ? cand_n : held_a;
+            assign scan_end = phase == PH_GRAB && scan_i == N_COUNT;
+            assign scan_u   = scan_a[UW+IW-1:IW];
+            assign scan_n   = scan_a[IW-1:0];
+            always @(posedge clk) begin
+                if (reset) begin
+                    scan_i <= {CW{1'b0}};
+                    scan_a <= {(UW+IW){1'b0}};
+                    data_a <= {(UW+IW){1'b0}};
+                    found  <= 1'b0;
+                    best   <= {W{1'b0}};
+                    cand   <= {(UW+IW){1'b0}};
+                    held   <= 1'b0;
+                    held_a <= {(UW+IW){1'b0}};
+                end else if (frame_start) begin
+                    scan_i <= {CW{1'b0}};
+                    scan_a <= {(UW+IW){1'b0}};
+                    found  <= 1'b0;
+                end else if (phase == PH_GRAB) begin
+                    data_a <= scan_a;
+                    found  <= found_n;
+                    cand   <= cand_n;
+                    if (take) best <= l1;
+                    // at the scan's end: the button up lets go; pressed with nothing held, the nearest is taken
+                    held   <= held_n;
+                    held_a <= held_a_n;
+                    if (!scan_end) begin
+                        scan_i <= scan_i + 1'b1;
+                        scan_a <= scan_n_i == K_LAST ? {scan_a[UW+IW-1:IW] + 1'b1, {IW{1'b0}}} : scan_a + 1'b1;
+                    end
+                end
+            end
+            assign grab_valid = held_n;
+            assign grab_a     = held_a_n;
+        end else begin : g_no_grab
+            assign scan_end   = 1'b0;
+            assign scan_u     = {UW{1'b0}};
+            assign scan_n     = {IW{1'b0}};
+            assign grab_valid = 1'b0;
+            assign grab_a     = {(UW+IW){1'b0}};
+        end
+    endgenerate
+
     // ---- the units ----
     wire [UW-1:0] rd_u = rd_addr[UW+IW-1:IW];
     wire [IW-1:0] rd_n = rd_addr[IW-1:0];
@@ -475,13 +570,15 @@ module strand_top #(
             wire acc_we  = f_wr_en && f_wr_u == U_ID;
             node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
                         .EN_MOUSE(EN_MOUSE), .EN_SPRINGS(EN_SPRINGS), .EN_GROUND(EN_GROUND),
-                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .DIM(DIM), .UNIT_ID(u)) u_unit (
+                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .DIM(DIM), .GRAB(GRAB),
+                        .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
                 .ground(ground), .friction(friction),
                 .gdt2_x(gdt2_x), .gdt2_y(gdt2_y), .gdt2_z(gdt2_z), .damping(damping), .impulse(impulse),
                 .box_x(box_x), .box_y(box_y), .box_z(box_z),
                 .mouse_x(mouse_x_q), .mouse_y(mouse_y_q), .mouse_z(mouse_z_q), .mouse_down(mouse_down_q),
+                .grab_here(grab_valid && grab_a[UW+IW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),
                 .a_idx(seq_rd_n), .a_x(a_x_all[u*W +: W]), .a_y(a_y_all[u*W +: W]), .a_pinned(a_pin_all[u]),
                 .a_px(a_px_all[u*W +: W]), .a_py(a_py_all[u*W +: W]),
                 .a_accx(a_accx_all[u*W +: W]), .a_accy(a_accy_all[u*W +: W]),

@@ -5,7 +5,8 @@
     lockstep_fuzz.py --replay SEED [--seed S] [--builds B]
 
 Every scene is drawn from a seed: its build (W, F, M, K, SQRT_BITS, DIV_BITS, ITER,
-SUBSTEPS and the EN_* effects, springs and ground included), its constants (start, step, rest length, gravity,
+SUBSTEPS and the EN_* effects: springs, ground, the mouse's impulse or grab form, 2D or 3D,
+a chain or a graph), its constants (start, step, rest length, gravity,
 damping, pins), its mouse script and its length, all within what the RTL supports.
 A Verilator build costs about a minute, so scenes share builds: the three builds of
 the RTL test scenes and B more drawn from --seed. Each scene runs through the
@@ -39,7 +40,7 @@ PARAM_FIELDS = {"W": "width", "F": "frac", "M": "units", "K": "nodes_per_unit", 
                 "EN_DAMPING": "damping", "EN_MOUSE": "mouse", "EN_CONSTRAINTS": "constraints", "RULE": "rule",
                 "EN_SPRINGS": "springs", "EN_GROUND": "ground", "GROUND_AXIS": "ground_axis",
                 "GROUND_ABOVE": "ground_above", "DIM": "dim", "GRAPH": "graph", "E_RODS": "e_rods",
-                "E_SPRINGS": "e_springs"}
+                "E_SPRINGS": "e_springs", "GRAB": "grab"}
 
 
 def read_build(path):
@@ -59,7 +60,7 @@ def read_build(path):
     missing = set(PARAM_FIELDS.values()) - set(build)
     if missing:
         sys.exit(f"FAIL lockstep: {out}/params.vh lacks {sorted(missing)}")
-    for key in ("gravity", "damping", "mouse", "constraints", "springs", "ground", "ground_above", "graph"):
+    for key in ("gravity", "damping", "mouse", "constraints", "springs", "ground", "ground_above", "graph", "grab"):
         build[key] = bool(build[key])
     build["rule"] = ["centred", "pairwise"][build["rule"]]
     return build
@@ -77,6 +78,7 @@ def random_build(rng):
             "ground_above": rng.random() < 0.5, "dim": rng.choice([2, 2, 3]), "graph": rng.random() < 0.3}
     if b["graph"]:
         b["rule"] = "pairwise"  # a graph has no chain to walk
+    b["grab"] = b["mouse"] and rng.random() < 0.35   # the grab form of the mouse
     if b["dim"] == 3 and rng.random() < 0.4:
         b["ground_axis"] = 2    # the floor of a 3D scene
     return b
@@ -148,7 +150,8 @@ def scene_text(build, seed):
                   f"radius = {rng.uniform(0, 4 * lsb):.6f}", f"friction = {rng.uniform(0, 1):.4f}"]
     if build["mouse"]:
         box = min(rng.uniform(rest, 4 * rest + 8 * lsb), reach)
-        lines += ["[mouse]", f"box = {vec([box] * 3)}", f"impulse = {rng.uniform(-rest, rest):.6f}"]
+        lines += ["[mouse]", f"box = {vec([box] * 3)}"]
+        lines += ["mode = grab"] if build.get("grab") else [f"impulse = {rng.uniform(-rest, rest):.6f}"]
         frame = 0
         while frame < frames:
             p = [rng.uniform(-reach, reach) for _ in range(3)]

@@ -445,11 +445,11 @@ int main(int argc, char **argv) {
     const int built[] = {STRAND_W, STRAND_F, STRAND_M, STRAND_K, STRAND_SQRT_BITS, STRAND_DIV_BITS, STRAND_ITER, STRAND_SUBSTEPS,
                          STRAND_EN_GRAVITY, STRAND_EN_DAMPING, STRAND_EN_MOUSE, STRAND_EN_CONSTRAINTS, STRAND_RULE,
                          STRAND_EN_SPRINGS, STRAND_EN_GROUND, STRAND_GROUND_AXIS, STRAND_GROUND_ABOVE,
-                         STRAND_DIM, STRAND_GRAPH, STRAND_E_RODS, STRAND_E_SPRINGS};
+                         STRAND_DIM, STRAND_GRAPH, STRAND_E_RODS, STRAND_E_SPRINGS, STRAND_GRAB};
     const int wanted[] = {hp.w, hp.f, hp.m, hp.k, hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps,
                           hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints, hp.rule,
                           hp.en_springs, hp.en_ground, hp.ground_axis, hp.ground_above,
-                          hp.dim, hp.graph, hp.e_rods, hp.e_springs};
+                          hp.dim, hp.graph, hp.e_rods, hp.e_springs, hp.grab};
     if (std::memcmp(built, wanted, sizeof built) != 0) {
         std::fprintf(stderr, "%s:1: this harness was built for another scene's parameters; build it for this one (make sim SCENE=%s)\n",
                      sc.path, sc.path);

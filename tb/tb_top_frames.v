@@ -56,7 +56,8 @@ module tb_top_frames;
         .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE),
         .EN_SPRINGS(`STRAND_EN_SPRINGS), .EN_GROUND(`STRAND_EN_GROUND),
         .GROUND_AXIS(`STRAND_GROUND_AXIS), .GROUND_ABOVE(`STRAND_GROUND_ABOVE),
-        .DIM(`STRAND_DIM), .GRAPH(`STRAND_GRAPH), .E_RODS(`STRAND_E_RODS), .E_SPRINGS(`STRAND_E_SPRINGS)
+        .DIM(`STRAND_DIM), .GRAPH(`STRAND_GRAPH), .E_RODS(`STRAND_E_RODS), .E_SPRINGS(`STRAND_E_SPRINGS),
+        .GRAB(`STRAND_GRAB)
     ) dut (
         .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_z(mouse_z), .mouse_down(mouse_down),
         .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),

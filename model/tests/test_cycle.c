@@ -66,6 +66,7 @@ static void check_scene(const char *path, int frames)
         scene_mouse_at(&sc, f, m, &down);
         in.mouse_x = hw_word(&sc.fmt, fx_from_double(&sc.fmt, m[0]));
         in.mouse_y = hw_word(&sc.fmt, fx_from_double(&sc.fmt, m[1]));
+        in.mouse_z = hw_word(&sc.fmt, fx_from_double(&sc.fmt, m[2]));
         in.mouse_down = sc.en_mouse && down;
         in.step = true;
         do {
@@ -130,10 +131,19 @@ static void test_graph_scenes(void **state)
     check_scene(STRAND_ROOT "/sim/scenes/ref001_video2.scene", 200); /* the ground is reached */
 }
 
+/* The grab form of the mouse: the scan at the frame start, the held node on the pointer. */
+static void test_grab_scenes(void **state)
+{
+    (void)state;
+    check_scene(STRAND_ROOT "/sim/scenes/hard_mouse_grab.scene", 300);
+    check_scene(STRAND_ROOT "/tb/scenes/chain_grab_3d.scene", 60);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_graph_scenes),
+        cmocka_unit_test(test_grab_scenes),
         cmocka_unit_test(test_spring_scenes),
         cmocka_unit_test(test_pairwise_scenes),
         cmocka_unit_test(test_ref000_rope),
