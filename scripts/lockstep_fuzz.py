@@ -120,7 +120,9 @@ def scene_text(build, seed):
         lines += ["[graph]"]
         lines += [f"node = {vec(p)}" for p in nodes]
         kinds = (["rod", "strut"] if build["constraints"] else []) + (["spring"] if build.get("springs") else [])
-        pairs = [(i, i + 1) for i in range(n - 1)] + [tuple(rng.sample(range(n), 2)) for _ in range(rng.randint(0, n))]
+        # the edge count is the build's (E_RODS, E_SPRINGS are build parameters); the pairs are the scene's
+        extra = (build["units"] * 7 + build["nodes_per_unit"] * 3 + build["width"]) % (n + 1)
+        pairs = [(i, i + 1) for i in range(n - 1)] + [tuple(rng.sample(range(n), 2)) for _ in range(extra)]
         if kinds:
             for i, (a, b) in enumerate(pairs):
                 rest_e = f" {rng.uniform(0.5, 1.5) * rest:.6f}" if rng.random() < 0.5 else ""
