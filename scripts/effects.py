@@ -51,20 +51,39 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 
 # ---- the effects: one row each ----
 #
-# name    short name (test output, --effect)
-# title   what the document calls it
-# scene   the lines that turn the effect on, by scene section: S is the body plus
-#         these; "without the effect" is the body without them
-# params  the strand_top parameters the effect sets, as hwgen must derive them from S
-# enable  (optional) the parameters the gating test forces to 0; default: every EN_*
-#         among params
-# context (optional) lines both S and the scene without the effect carry (an effect
-#         that needs another one to do anything); its cost is measured over them
-# body    (optional) sections that replace the body's, in both (a graph body, 3D)
+# name     short name (test output, --effect)
+# title    what the document calls it
+# scene    the lines that turn the effect on, by scene section: S is the body plus
+#          these; "without the effect" is the body without them
+# params   the strand_top parameters the effect sets, as hwgen must derive them from S
+#          (these may differ from the body's: a graph has one unit of every node)
+# enable   (optional) the parameters the gating test forces to 0; default: every EN_*
+#          among params. A row with none (a body property: DIM, GRAPH) is measured
+#          by `doc` but has no gating test.
+# context  (optional) lines both S and the scene without the effect carry (an effect
+#          that needs another one to act); its cost is measured over them
+# replace  (optional) sections of the body that S has instead (None: S drops it)
 #
-# The values are run-time constants: they change no cell and no cycle, but the
-# lockstep runs use them, so they must make a valid scene on both bodies below.
+# scene, replace and params may be functions of the body (a dict of strand_top
+# parameters, below), for rows whose lines depend on its size. The values are
+# run-time constants: they change no cell and no cycle, but the lockstep runs use
+# them, so they must make a valid scene on both bodies.
 GRAVITY = {"gravity": ["accel = 0.5 -9.8"]}
+PAIRWISE = {"constraints": ["rule = pairwise"]}
+
+
+def chain_3d(b):
+    return {"chain": [f"units = {b['M']}", f"nodes_per_unit = {b['K']}", "start = -4 8 0", "step = 1.5 0 0.5",
+                      "rest = 1.2", "pinned = 0"]}
+
+
+def graph_of(b):
+    """The body's chain as a graph: the same nodes, a rod on each link."""
+    n = b["M"] * b["K"]
+    return {"chain": None,
+            "graph": [f"node = {-4 + 1.5 * i:g} 8" for i in range(n)]
+            + [f"edge = {i} {i + 1} rod 1.2" for i in range(n - 1)] + ["pinned = 0"]}
+
 
 EFFECTS = [
     dict(name="gravity", title="gravity",
@@ -78,6 +97,9 @@ EFFECTS = [
          scene={"mouse": ["box = 2 2", "impulse = 1", "event = 0 -2.5 8 1", "event = 2 -2.5 8 0",
                           "event = 3 0.5 8 1"]},
          params={"EN_MOUSE": 1}),
+    dict(name="grab", title="mouse, grab form",
+         scene={"mouse": ["mode = grab", "box = 2 2", "event = 0 -2.5 8 1", "event = 1 -2 9 1", "event = 3 -1 9.5 0"]},
+         params={"EN_MOUSE": 1, "GRAB": 1}),
     dict(name="springs", title="damped springs",
          scene={"springs": ["ks = 40", "kd = 0.8"]},
          params={"EN_SPRINGS": 1}),
@@ -89,8 +111,15 @@ EFFECTS = [
          scene={"constraints": ["rule = centred"]},
          params={"EN_CONSTRAINTS": 1, "RULE": 0}),
     dict(name="pairwise", title="constraints, pairwise rule (RULE 1)",
-         scene={"constraints": ["rule = pairwise"]},
+         scene=PAIRWISE,
          params={"EN_CONSTRAINTS": 1, "RULE": 1}),
+    dict(name="3d", title="3D (a z lane)",
+         scene={"scene": ["dim = 3"]}, replace=chain_3d,
+         params={"DIM": 3}),
+    dict(name="graph", title="graph body (edge memory; one unit)",
+         scene={}, replace=graph_of,
+         context=PAIRWISE,  # a graph's rods are constraints
+         params=lambda b: {"GRAPH": 1, "M": 1, "K": b["M"] * b["K"], "E_RODS": b["M"] * b["K"] - 1}),
 ]
 
 # The run-time part of every body: a horizontal chain pinned at node 0, its links
@@ -126,8 +155,19 @@ def body_sections(build):
     }
 
 
-def enable_params(row):
-    return row.get("enable") or [p for p in row["params"] if p.startswith("EN_")]
+def field(row, key, build, default=None):
+    """A row's field, called on the body when it is a function."""
+    v = row.get(key, default)
+    return v(build) if callable(v) else v
+
+
+def enable_params(row, build):
+    return row.get("enable") or [p for p in field(row, "params", build) if p.startswith("EN_")]
+
+
+def resolved(row, build):
+    """The row with its fields evaluated on this body."""
+    return dict(row, **{k: field(row, k, build, {}) for k in ("scene", "params", "context", "replace")})
 
 
 # ---- scenes ----
@@ -157,9 +197,14 @@ def scene_text(name, sections, frames):
 
 def scenes_of(row, build):
     """(S, S without the effect) as section dicts."""
-    body = merge((body_sections(build), False), (row.get("body", {}), True))
-    without = merge((body, False), (row.get("context", {}), False))
-    return merge((without, False), (row["scene"], False)), without
+    without = merge((body_sections(build), False), (field(row, "context", build, {}), False))
+    with_ = merge((without, False), (field(row, "scene", build), False))
+    for sec, lines in field(row, "replace", build, {}).items():
+        if lines is None:
+            with_.pop(sec, None)
+        else:
+            with_[sec] = list(lines)
+    return with_, without
 
 
 # ---- parameters from `strand hwgen` ----
@@ -412,7 +457,12 @@ def sources_digest(srcs):
 # ---- the gating test ----
 
 def cmd_test(o):
-    rows = [r for r in EFFECTS if not o.effect or r["name"] in o.effect]
+    rows = [resolved(r, TEST_BUILD) for r in EFFECTS if not o.effect or r["name"] in o.effect]
+    for r in rows:
+        if not enable_params(r, TEST_BUILD):
+            print(f"effects {r['name']}: no enable switch ({', '.join(r['params'])} is a property of the body), "
+                  "so no gating test; make effects measures it")
+    rows = [r for r in rows if enable_params(r, TEST_BUILD)]
     top = top_parameters(o.rtl_dir)
     base = os.path.join(o.build, "test")
     jobs = Jobs(o.jobs)
@@ -440,7 +490,7 @@ def cmd_test(o):
             for p, v in r["params"].items():
                 if gS.params.get(p) != v:
                     plan["problems"].append(f"the table says S sets {p}={v}, hwgen derives {p}={gS.params.get(p)}")
-            enable = enable_params(r)
+            enable = enable_params(r, TEST_BUILD)
             for p in enable:
                 if gB.params.get(p) != 0:
                     plan["problems"].append(f"without the effect's lines hwgen still derives {p}={gB.params.get(p)}")
@@ -570,9 +620,10 @@ def cmd_doc(o):
     jobs = Jobs(o.jobs)
     t0 = time.time()
     rows = [dict(name="baseline", title="baseline: the body, no effect", scene={}, params={})] + EFFECTS
+    rows = [resolved(r, body) for r in rows]
     built = {}  # scene text -> (path, Gen)
 
-    def export(tag, secs):
+    def export(tag, secs, row_params):
         text = scene_text(f"effects_{tag}", secs, o.frames)
         if text not in built:
             d = os.path.join(base, "scenes")
@@ -582,7 +633,7 @@ def cmd_doc(o):
                 f.write(text)
             g = Gen(o.strand, path, os.path.join(d, f"{tag}.gen"), o.frames, top)
             for n, v in body.items():
-                if g.params.get(n) != v:
+                if n not in row_params and g.params.get(n) != v:
                     raise Failure(f"{path}: hwgen derives {n}={g.params.get(n)}, the body has {n}={v}")
             built[text] = (path, g)
         return built[text]
@@ -590,8 +641,8 @@ def cmd_doc(o):
     try:
         for r in rows:
             s_sec, b_sec = scenes_of(r, body)
-            r["S"] = export(r["name"], s_sec)
-            r["B"] = export(r["name"] + "_without", b_sec) if r["scene"] else r["S"]
+            r["S"] = export(r["name"], s_sec, r["params"])
+            r["B"] = export(r["name"] + "_without", b_sec, {}) if r is not rows[0] else r["S"]
             for p, v in r["params"].items():
                 if r["S"][1].params.get(p) != v:
                     raise Failure(f"{r['name']}: the table says the scene sets {p}={v}, hwgen derives {p}={r['S'][1].params.get(p)}")
@@ -637,8 +688,7 @@ def cmd_doc(o):
 
 def over(r):
     """What a row's cost is measured over."""
-    parts = [] if not r.get("body") else ["its own body (" + ", ".join(f"[{s}]" for s in r["body"]) + ")"]
-    parts += [f"[{s}]" for s in r.get("context", {})]
+    parts = [f"[{s}]" for s in r["context"]]
     return "the baseline" + (" with " + " and ".join(parts) if parts else "")
 
 
@@ -742,11 +792,8 @@ def write_doc(o, rows, res, body_name, body):
     w("| effect | scene lines | with | parameters |")
     w("|---|---|---|---|")
 
-    def show(secs):
-        return "; ".join(f"`[{sec}]` " + ", ".join(f"`{ln}`" for ln in ls) for sec, ls in secs.items()) or "-"
-
     for r in rows[1:]:
-        w(f"| {r['title']} | {show(r['scene'])} | {show(dict(r.get('body', {}), **r.get('context', {})))} "
+        w(f"| {r['title']} | {show(r['scene'], r['replace'])} | {show(r['context'])} "
           f"| {', '.join(f'{n}={v}' for n, v in r['params'].items())} |")
     w("")
     w("## The check that a switched-off effect costs nothing")
@@ -771,10 +818,25 @@ def write_doc(o, rows, res, body_name, body):
 
 # ---- command line ----
 
+def show(scene, replace=None, md=True):
+    """A row's lines, short: a replaced section by its first lines and its length."""
+    q = (lambda t: f"`{t}`") if md else (lambda t: t)
+    parts = [f"{q(f'[{sec}]')} " + ", ".join(q(ln) for ln in ls) for sec, ls in scene.items() if ls]
+    for sec, ls in (replace or {}).items():
+        if ls is None:
+            parts.append(f"no {q(f'[{sec}]')}")
+        else:
+            parts.append(f"{q(f'[{sec}]')} instead: " + ", ".join(q(ln) for ln in (ls if len(ls) <= 6 else ls[:3]))
+                         + (f", ... ({len(ls)} lines)" if len(ls) > 6 else ""))
+    return "; ".join(parts) or "-"
+
+
 def cmd_list():
+    _, body = doc_body()
     for r in EFFECTS:
-        lines = "; ".join(f"[{sec}] " + ", ".join(ls) for sec, ls in r["scene"].items())
-        print(f"{r['name']:10s} {' '.join(f'{n}={v}' for n, v in r['params'].items()):28s} {lines}")
+        r = resolved(r, body)
+        print(f"{r['name']:9s} {' '.join(f'{n}={v}' for n, v in r['params'].items()):40s} "
+              f"{show(r['scene'], r['replace'], md=False)}" + (f"; with {show(r['context'], md=False)}" if r["context"] else ""))
     return 0
 
 
