@@ -65,7 +65,7 @@ help:
 	@echo "  make test-stability  the hard cases in fixed and double (10^5 frames of most) and strand check's stability bound"
 	@echo "  make test-fuzz   replay the fuzz corpus and crash reproducers, a 45 s fuzz run, malformed scenes on the CLI"
 	@echo "  make fuzz [FUZZ_SECONDS=600]  a longer bounded run of the scene-parser fuzzer (libFuzzer, ASan, UBSan)"
-	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model"
+	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model; docs/soak.md"
 	@echo "  make stability   regenerate docs/stability.md and docs/img/stability_euler_verlet.png"
 	@echo "  make synth       Yosys (generic, iCE40 + nextpnr, ECP5, Xilinx) for the 4x5, 8x8, 16x16 builds -> docs/resources.md"
 	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"

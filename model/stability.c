@@ -588,10 +588,11 @@ int main(int argc, char **argv)
         if (j) {
             fprintf(j, "%s  {\"name\": \"%s\", \"proves\": \"%s\", \"pass\": %s, \"why\": \"%s\", \"frames\": %d, \"nodes\": %d, "
                        "\"format\": \"Q%d.%d\", \"substeps_scene\": %d, \"substeps\": %d, \"iterations\": %d, \"rtl_subset\": %s, "
-                       "\"rms_rest\": %.6g, \"max_err_rest\": %.6g, \"seconds\": %.3f, \"bound_diverged_at\": %d, \"bound_stretch\": %.6g,\n",
+                       "\"rms_rest\": %.6g, \"max_err_rest\": %.6g, \"seconds\": %.3f, \"bound_diverged_at\": %d, \"bound_stretch\": %.6g, "
+                       "\"energy_checked\": %s,\n",
                     ran ? ",\n" : "", r.c->name, r.c->proves, r.pass ? "true" : "false", r.pass ? "" : r.why, r.frames, r.sc.n_nodes,
                     r.sc.fmt.width - r.sc.fmt.frac, r.sc.fmt.frac, r.substeps_scene, r.substeps_used, r.sc.iterations, r.rtl ? "true" : "false",
-                    r.rms, r.max_err, r.seconds, r.bound_diverged_at, r.bound_stretch);
+                    r.rms, r.max_err, r.seconds, r.bound_diverged_at, r.bound_stretch, r.c->checks & C_ENERGY ? "true" : "false");
             json_figures(j, "fixed", &r.fx, true);
             fprintf(j, ",\n");
             json_figures(j, "double", &r.dbl, false);

@@ -6,7 +6,7 @@
 #   make test-stability   the hard cases (10^5 frames of most, on the model) and the bound's CLI
 #   make test-fuzz        replay the committed fuzz inputs, a short fuzz run, malformed scenes on the CLI
 #   make fuzz [FUZZ_SECONDS=600]  a longer bounded fuzz run
-#   make soak [SOAK_JOBS=2]       10^6 frames of every hard case
+#   make soak [SOAK_JOBS=2]       10^6 frames of every hard case; writes docs/soak.md
 #   make stability        regenerate docs/stability.md and docs/img/stability_euler_verlet.png
 
 STAB_DIR      := $(BUILD)/stability
@@ -47,7 +47,9 @@ soak: $(STAB_BIN)
 	@mkdir -p $(STAB_DIR)
 	@$(STAB_BIN) --list | grep '^hard_' | xargs -P $(SOAK_JOBS) -I{} sh -c \
 	  '$(STAB_BIN) --soak --only {} --json $(STAB_DIR)/soak-{}.json > $(STAB_DIR)/soak-{}.log 2>&1; cat $(STAB_DIR)/soak-{}.log'; \
-	  ! grep -q '^FAIL' $(STAB_DIR)/soak-*.log
+	  ! grep -q '^FAIL' $(STAB_DIR)/soak-*.log; rc=$$?; \
+	  python3 scripts/soak_doc.py docs/soak.md $$($(STAB_BIN) --list | grep '^hard_' | sed 's|.*|$(STAB_DIR)/soak-&.json|') || rc=1; \
+	  exit $$rc
 
 # docs/stability.md: the hard cases at their make-test length, the Euler/Verlet series and
 # plot, and a FUZZ_SHORT-second fuzz run; every figure comes from this run.
