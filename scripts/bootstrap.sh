@@ -15,6 +15,7 @@ PACKAGES=(
   libcmocka-dev             # C unit tests
   libcairo2-dev             # pictures (PNG)
   iverilog verilator        # simulation and lint
+  ccache                    # Verilator's runtime objects, compiled once for every harness build
   yosys nextpnr-ice40 fpga-icestorm  # synthesis reports, iCE40 place and route
   gtkwave                   # make wave
   ffmpeg                    # make movie

@@ -22,7 +22,14 @@ stamp="$(cat "$out.gen/params.vh" | grep -v Generated) $* $(cat rtl/*.v tb/sim_t
 if [ -x "$out/harness" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$stamp" ]; then exit 0; fi
 cp "$out.gen/params.vh" "$out.gen/params.h" "$out/"
 rm -rf "$out/obj"
-verilator --cc --exe --build -j 2 -O3 --trace-fst --x-assign unique --x-initial unique \
+# ccache (when installed) compiles Verilator's runtime (verilated*.cpp, the same for every
+# build) once; with the repository as base directory the command lines of all builds match.
+objcache=()
+if command -v ccache >/dev/null 2>&1; then
+  export CCACHE_DIR="$root/$build/ccache" CCACHE_BASEDIR="$root"
+  objcache=(-MAKEFLAGS "OBJCACHE=ccache")
+fi
+verilator --cc --exe --build -j 2 -O3 --trace-fst --x-assign unique --x-initial unique "${objcache[@]}" \
   -Mdir "$out/obj" --top-module sim_top -o "$root/$out/harness" \
   -I"$root/$build/gen" -I"$root/$out" -I"$root/rtl" "$@" \
   -CFLAGS "-O2 -I$root/model -I$root/$build/gen -I$root/$out $(pkg-config --cflags inih cairo)" \

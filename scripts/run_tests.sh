@@ -12,8 +12,10 @@ passed=0 failed=0 failed_steps=()
 for step in "$@"; do
   echo "== $step"
   log="$logs/$step.log"
+  t0=$SECONDS
   make --no-print-directory -s "$step" 2>&1 | tee "$log"
   rc=${PIPESTATUS[0]}
+  echo "== $step: $((SECONDS - t0)) s"
   p=$(grep -cE '^(PASS |\[       OK \] )' "$log")
   f=$(grep -cE '^(FAIL |\[  FAILED  \] [^0-9])' "$log")
   if [ "$rc" -ne 0 ] && [ "$f" -eq 0 ]; then f=1; echo "FAIL $step: exit status $rc (log: $log)"; fi
