@@ -35,9 +35,9 @@ import argparse
 import concurrent.futures
 import glob
 import hashlib
-import json
 import os
 import re
+import shutil
 import subprocess
 import sys
 import threading
@@ -370,8 +370,15 @@ def build_harness(d, vh, h, o):
     ddir = os.path.abspath(d)
     cflags = f"-O2 -I{ROOT}/model -I{gen} -I{ddir} {pkg_flags('--cflags')}"
     ldflags = f"{lib} {pkg_flags('--libs')} -lm"
+    # ccache (when installed) compiles Verilator's runtime once for every build, as
+    # scripts/build_harness.sh does (with the same cache directory)
+    objcache = []
+    if shutil.which("ccache"):
+        os.environ.setdefault("CCACHE_DIR", os.path.join(ROOT, "build", "ccache"))
+        os.environ.setdefault("CCACHE_BASEDIR", ROOT)
+        objcache = ["-MAKEFLAGS", "OBJCACHE=ccache"]
     cmd = ["verilator", "--cc", "--exe", "--build", "-j", "1", "-O3", "--trace-fst", "--x-assign", "unique",
-           "--x-initial", "unique", "-Mdir", os.path.join(ddir, "obj"), "--top-module", "sim_top",
+           "--x-initial", "unique"] + objcache + ["-Mdir", os.path.join(ddir, "obj"), "--top-module", "sim_top",
            "-o", os.path.join(ddir, "harness"), f"-I{gen}", f"-I{ddir}", f"-I{os.path.abspath(o.rtl_dir)}",
            "-CFLAGS", cflags, "-LDFLAGS", ldflags, os.path.join(ROOT, "tb/sim_top.v")] \
         + [os.path.abspath(s) for s in o.srcs] + [os.path.join(ROOT, "tb/harness.cpp")]
@@ -410,7 +417,7 @@ def run_harness(exe, scene_path, frames, cwd):
     out = p.stdout + p.stderr
     if p.returncode != 0:
         lines = [ln for ln in out.splitlines() if ln.strip()]
-        raise Failure("lockstep failed: " + "; ".join(lines[:3]))
+        raise Failure(f"lockstep failed ({os.path.relpath(os.path.abspath(cwd), ROOT)}): " + "; ".join(lines[:3]))
     m = re.search(r"^\s*cycles per frame\s+(\d+)(.*)$", out, re.M)
     dg = re.search(r"^\s*output digest\s+(\S+)", out, re.M)
     if not m or not dg:
@@ -724,7 +731,7 @@ def write_doc(o, rows, res, body_name, body):
       "| ECP5 MULT18X18D | cycles per frame |")
     w("|---|---|---|--:|--:|--:|--:|--:|--:|--:|")
     w(f"| {rows[0]['title']} | "
-      + ", ".join(f"{n}={v}" for n, v in rows[0]["S"][1].params.items() if n.startswith("EN_") or n == "RULE")
+      + ", ".join(f"{n}={v}" for n, v in rows[0]["S"][1].params.items() if n not in body)
       + " | (absolute) | " + " | ".join(fmt(base[k]) for k in keys) + " |")
     for r in rows[1:]:
         s, b = fig(r, "S"), fig(r, "B")
