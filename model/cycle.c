@@ -28,6 +28,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     memset(c, 0, sizeof *c);
     if (hp->m > CYC_MAX_UNITS) return false;
     c->hp = *hp;
+    c->hp.grab = hp->grab && hp->en_mouse; /* strand_top: HAS_GRAB = EN_MOUSE && GRAB */
     /* A chain with the build's effects; every value 0, as after reset. */
     scene *sc = &c->sc;
     snprintf(sc->name, sizeof sc->name, "rtl");
@@ -46,7 +47,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->mass = 1;
     sc->en_gravity = hp->en_gravity;
     sc->en_mouse = hp->en_mouse;
-    sc->mouse = hp->grab ? MOUSE_GRAB : MOUSE_IMPULSE;
+    sc->mouse = c->hp.grab ? MOUSE_GRAB : MOUSE_IMPULSE;
     sc->en_constraints = hp->en_constraints;
     sc->rule = hp->rule ? RULE_PAIRWISE : RULE_CENTRED;
     sc->en_springs = hp->en_springs;

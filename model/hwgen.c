@@ -116,7 +116,7 @@ long hw_cycles_per_frame(const hw_params *hp)
     if (hp->en_springs) substep += 1 + springs * (spring + 5); /* the spring pass: every link, as pairwise */
     if (hp->en_ground) substep += hp->k + 1;                    /* the ground pass: every node of a unit */
     /* the grab scan at the frame's start: every node, one a cycle, and one more */
-    return hp->substeps * substep + 1 + (hp->grab ? n + 1 : 0);
+    return hp->substeps * substep + 1 + (hp->grab && hp->en_mouse ? n + 1 : 0);
 }
 
 int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)

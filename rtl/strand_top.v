@@ -570,7 +570,7 @@ module strand_top #(
             wire acc_we  = f_wr_en && f_wr_u == U_ID;
             node_unit #(.W(W), .F(F), .K(K), .IW(IW), .EN_GRAVITY(EN_GRAVITY), .EN_DAMPING(EN_DAMPING),
                         .EN_MOUSE(EN_MOUSE), .EN_SPRINGS(EN_SPRINGS), .EN_GROUND(EN_GROUND),
-                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .DIM(DIM), .GRAB(GRAB),
+                        .GROUND_AXIS(GROUND_AXIS), .GROUND_ABOVE(GROUND_ABOVE), .DIM(DIM), .GRAB(HAS_GRAB),
                         .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
