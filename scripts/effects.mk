@@ -8,7 +8,8 @@
 # effects: for the 4x5 Q16.16 body of make synth, with no effect and with each effect
 # of the table at the top of scripts/effects.py: strand hwgen, Yosys (generic,
 # synth_ice40, synth_ecp5) and the Verilator harness in lockstep, whose measured
-# cycles per frame must equal hw_cycles_per_frame(); then docs/effects.md is rewritten.
+# cycles per frame must equal hw_cycles_per_frame(); the gating check below; then
+# docs/effects.md is rewritten with both.
 # test-effects: on a small body, for each effect, the scene with its switch forced off
 # against the scene without it: the same generic cells, cycles per frame and outputs;
 # one PASS/FAIL line per effect. Results are cached in $(BUILD)/effects/ by the contents
@@ -25,7 +26,8 @@ EFFECTS_ARGS  = --build $(BUILD)/effects --gen $(GEN) --strand $(STRAND) --lib $
 
 effects: bootstrap
 	@$(MAKE) --no-print-directory -s $(STRAND) $(GEN_HDRS)
-	@$(EFFECTS_PY) doc $(EFFECTS_ARGS) --out docs/effects.md
+	@$(EFFECTS_PY) test $(EFFECTS_ARGS) --json $(BUILD)/effects/test.json
+	@$(EFFECTS_PY) doc $(EFFECTS_ARGS) --out docs/effects.md --test-json $(BUILD)/effects/test.json
 
 test-effects: $(STRAND) $(GEN_HDRS)
 	@$(EFFECTS_PY) test $(EFFECTS_ARGS)

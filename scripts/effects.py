@@ -35,6 +35,7 @@ import argparse
 import concurrent.futures
 import glob
 import hashlib
+import json
 import os
 import re
 import shutil
@@ -523,6 +524,7 @@ def cmd_test(o):
                 jobs.submit(("yosys", k), run_yosys, "generic", params, os.path.join(base, "p_" + k), o.gen, o.srcs)
 
         failed = 0
+        records = []  # for --json: the figures of every row, for docs/effects.md
         for plan in plans:
             r = plan["row"]
             why = list(plan["problems"])
@@ -559,6 +561,8 @@ def cmd_test(o):
                     why.append(str(e))
             name = r["name"]
             en = ", ".join(f"{p}=0" for p in plan.get("enable", []))
+            records.append(dict(name=name, title=r["title"], forced=en, why=why,
+                                same_params="pA" in plan and plan["pA"] == plan["gB"].params, **detail))
             if why:
                 failed += 1
                 print(f"FAIL effects {name}: " + "; ".join(why))
@@ -570,6 +574,9 @@ def cmd_test(o):
                       f"the effect on costs {detail['ts'] - detail['tb']} cells")
     finally:
         jobs.close()
+    if o.json:
+        with open(o.json, "w") as f:
+            json.dump(dict(body=TEST_BUILD, frames=o.frames, rows=records), f, indent=1)
     print(f"effects test: {len(plans) - failed} passed, {failed} failed in {time.time() - t0:.0f} s "
           f"(RTL {o.rtl_dir}, {o.frames} frames each)")
     return 1 if failed else 0
@@ -814,6 +821,35 @@ def write_doc(o, rows, res, body_name, body):
       "cost more cells than (b). `scripts/effects.py test --rtl-dir DIR` runs the same check on a copy of "
       "the RTL.")
     w("")
+    if getattr(o, "test_json", None):
+        try:
+            with open(o.test_json) as f:
+                t = json.load(f)
+        except (OSError, ValueError) as e:
+            raise Failure(f"{o.test_json}: cannot read the test results: {e}")
+        b = t["body"]
+        w(f"The last run (this `make effects`), on the body W={b['W']}, F={b['F']}, M={b['M']}, K={b['K']}, "
+          f"SQRT_BITS={b['SQRT_BITS']}, DIV_BITS={b['DIV_BITS']}, ITER={b['ITER']}, SUBSTEPS={b['SUBSTEPS']}, "
+          f"{t['frames']} frames in lockstep each. An effect switched off costs no cell and no cycle when "
+          "(a) equals (b):")
+        w("")
+        w("| effect | switched off | generic cells (a) / (b) | cycles per frame (a) / (b) | outputs in every cycle "
+          "| cells when on, over (b) | result |")
+        w("|---|---|--:|--:|---|--:|---|")
+        for rec in t["rows"]:
+            cells = f"{fmt(rec['ta'])} / {fmt(rec['tb'])}" if "ta" in rec else "-"
+            cyc = f"{fmt(rec['cyc_a'])} / {fmt(rec['cyc_b'])}" if "cyc_a" in rec else "-"
+            outs = ("alike" if rec["same_out"] else "differ") if "same_out" in rec else "-"
+            on = signed(rec["ts"] - rec["tb"]) if "ts" in rec else "-"
+            res_ = "PASS" if not rec["why"] else "FAIL: " + "; ".join(rec["why"])
+            w(f"| {rec['title']} | {rec['forced']}{' (the same parameters as (b))' if rec['same_params'] else ''} "
+              f"| {cells} | {cyc} | {outs} | {on} | {res_} |")
+        w("")
+        w("Where (a) has the same parameters as (b), the equal cell counts follow from the build; the row "
+          "still checks that the effect's registers and inputs change no output and no cycle, and that the "
+          "effect, when on, is really behind its switch. 3D and graph bodies have no switch to turn off: "
+          "they are properties of the body, measured above.")
+        w("")
     w("Regenerate with `make effects` (results are cached in `build/effects/` by the contents of the RTL, "
       "the headers and the parameters; a rerun on unchanged sources only writes this file).")
     text = "\n".join(L) + "\n"
@@ -862,7 +898,9 @@ def main():
         s.add_argument("--frames", type=int, default=3 if name == "doc" else 6, help="frames each lockstep run")
         if name == "doc":
             s.add_argument("--out", default="docs/effects.md")
+            s.add_argument("--test-json", help="the results of `effects.py test --json`, shown in the document")
         else:
+            s.add_argument("--json", help="also write the results here (for `doc --test-json`)")
             s.add_argument("--effect", action="append", default=[], metavar="NAME",
                            help="only this effect (repeatable); names: " + ", ".join(r["name"] for r in EFFECTS))
     sub.add_parser("list")
