@@ -14,11 +14,11 @@ COPT     := -O2 -g
 DEP_CFLAGS = $(shell pkg-config --cflags inih cairo 2>/dev/null)
 DEP_LIBS   = $(shell pkg-config --libs inih cairo 2>/dev/null)
 GEN       := $(BUILD)/gen
-GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh
+GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh $(GEN)/strand_params.h $(GEN)/strand_params.vh
 MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel -I$(GEN) $(DEP_CFLAGS)
 
 MODEL_SRC := model/fixed.c model/scene.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c \
-             model/hwgen.c model/cycle.c
+             model/hwgen.c model/timing.c model/cycle.c
 MODEL_HDR := $(wildcard model/*.h)
 MODEL_OBJ := $(MODEL_SRC:model/%.c=$(BUILD)/model/%.o)
 MODEL_LIB := $(BUILD)/libstrand.a
@@ -26,21 +26,10 @@ STRAND    := $(BUILD)/strand
 
 SCENES    := $(wildcard sim/scenes/*.scene)
 
-# The RTL: the top and everything under it (rtl/ holds one module per file).
-TOP_SRC   := rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v rtl/spring_force.v \
-             rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v
+# The RTL: strand_core and everything under it (rtl/ holds one module per file).
+TOP_SRC   := $(sort $(wildcard rtl/*.v))
 # Scenes whose every frame the RTL must reproduce bit for bit (tb/scenes/ hold test-only builds).
 RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
-# Parameter sets the top is linted with, beyond its defaults.
-LINT_SETS := "-GEN_DAMPING=1'b1 -GEN_MOUSE=1'b0 -GEN_GRAVITY=1'b0 -GM=1 -GK=4" \
-             "-GM=16 -GK=16 -GITER=4 -GSUBSTEPS=3 -GSQRT_BITS=12 -GDIV_BITS=9" \
-             "-GEN_CONSTRAINTS=1'b0 -GW=18 -GF=8" "-GRULE=1 -GM=3 -GK=4 -GITER=2" \
-             "-GEN_SPRINGS=1'b1 -GRULE=1 -GSUBSTEPS=2" "-GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8 -GM=1" \
-             "-GEN_GROUND=1'b1 -GGROUND_AXIS=0 -GGROUND_ABOVE=1'b0 -GEN_CONSTRAINTS=1'b0" "-GEN_GROUND=1'b1 -GEN_SPRINGS=1'b1 -GRULE=1" \
-             "-GDIM=3 -GEN_DAMPING=1'b1 -GEN_GROUND=1'b1 -GGROUND_AXIS=2" \
-             "-GDIM=3 -GGRAPH=1'b1 -GE_RODS=6 -GE_SPRINGS=24 -GM=1 -GK=12 -GRULE=1 -GEN_SPRINGS=1'b1 -GEN_GROUND=1'b1 -GGROUND_AXIS=2" \
-             "-GGRAPH=1'b1 -GE_RODS=1 -GE_SPRINGS=3 -GM=2 -GK=2 -GRULE=1 -GEN_SPRINGS=1'b1 -GEN_CONSTRAINTS=1'b0 -GW=16 -GF=8" \
-             "-GGRAB=1'b1 -GM=3 -GK=3" "-GGRAB=1'b1 -GDIM=3 -GEN_GROUND=1'b1 -GRULE=1 -GM=1 -GK=1"
 
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
@@ -79,8 +68,13 @@ bootstrap:
 
 # ---- generated headers: the register map, one source for C and Verilog ----
 
-$(GEN_HDRS) &: scripts/gen_regs.py
+$(GEN)/strand_regs.h $(GEN)/strand_regs.vh &: scripts/gen_regs.py
 	python3 scripts/gen_regs.py $(GEN)
+
+# ---- generated headers: the build parameters of strand_core, one table for every side ----
+
+$(GEN)/strand_params.h $(GEN)/strand_params.vh &: scripts/gen_params.py
+	python3 scripts/gen_params.py $(GEN)
 
 # ---- the C model ----
 
@@ -192,11 +186,15 @@ lint-c: $(GEN_HDRS)
 	@for f in $(MODEL_SRC) model/strand.c; do $(CC) -std=c11 -pedantic $(WARN) -Imodel -I$(GEN) $(DEP_CFLAGS) -fsyntax-only $$f || exit 1; done
 	@echo "lint-c: clean (-std=c11 -pedantic -Wall -Wextra -Werror)"
 
-lint-rtl: $(GEN_HDRS)
-	@verilator --lint-only -Wall -I$(GEN) $(TOP_SRC) --top-module strand_top
-	@for g in $(LINT_SETS); do verilator --lint-only -Wall -I$(GEN) $$g $(TOP_SRC) --top-module strand_top || exit 1; done
-	@out=$$(iverilog -Wall -g2005 -I$(GEN) -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
-	@echo "lint-rtl: clean (verilator --lint-only -Wall on the defaults and every LINT_SETS parameter set; iverilog -Wall)"
+# strand_core is linted with its defaults and with the build of every scene the RTL runs in
+# make test ('strand info SCENE --vflags': the parameters hwgen derives), each build once.
+LINT_SCENES := $(sort $(RTL_SCENES) $(foreach s,$(LOCKSTEP_SCENES),$(firstword $(subst :, ,$(s)))))
+lint-rtl: $(GEN_HDRS) $(STRAND)
+	@verilator --lint-only -Wall -I$(GEN) -Irtl $(TOP_SRC) --top-module strand_core
+	@for s in $(LINT_SCENES); do $(STRAND) info $$s --vflags || exit 1; done | sort -u > $(BUILD)/lint-builds.txt
+	@while read -r g; do verilator --lint-only -Wall -I$(GEN) -Irtl $$g $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$g"; exit 1; }; done < $(BUILD)/lint-builds.txt
+	@out=$$(iverilog -Wall -g2005 -I$(GEN) -Irtl -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
+	@echo "lint-rtl: clean (verilator --lint-only -Wall on strand_core's defaults and $$(wc -l < $(BUILD)/lint-builds.txt) scene builds; iverilog -Wall)"
 
 lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 

@@ -79,8 +79,8 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->prev = calloc((size_t)n, sizeof *sc->prev);
     sc->pinned = calloc((size_t)n, sizeof *sc->pinned);
     if (!sc->pos || !sc->prev || !sc->pinned || !sim_fx_init(&c->s, sc, &sc->fmt)) return false;
-    c->lt = hp->sqrt_bits + hp->div_bits + 2 * hp->dim + 5;                     /* toward.v */
-    c->ls = hp->sqrt_bits + hp->dim * hp->div_bits + 5 * hp->dim + 5;           /* spring_force.v */
+    c->lt = (int)hw_toward_latency(hp);
+    c->ls = (int)hw_spring_latency(hp);
     return true;
 }
 
@@ -98,6 +98,8 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     int m = c->hp.m;
     /* every field below is written: no memset of the 256-lane arrays each cycle */
     o->frame_done = c->frame_done;
+    o->busy = c->phase != PH_IDLE;
+    o->irq = c->irq;
     o->rd_x = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_x[c->rd_u_q]) : 0;
     o->rd_y = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_y[c->rd_u_q]) : 0;
     o->rd_z = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_z[c->rd_u_q]) : 0;
@@ -153,6 +155,7 @@ static void reset_all(cyc_model *c)
     c->phase = PH_IDLE;
     c->substep = 0;
     c->frame_done = false;
+    c->irq = false;
     memset(c->mouse_q, 0, sizeof c->mouse_q);
     c->mouse_down_q = false;
     c->init_u = c->init_n = c->init_count = 0;
@@ -461,7 +464,9 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->vidx = (c->vidx + 1) & ((1 << hp->iw) - 1);
     }
 
-    /* strand_top frame FSM. */
+    /* frame_ctrl's FSM. */
+    const int phase_before = c->phase;
+    bool frame_end = false;
     c->frame_done = false;
     switch (c->phase) {
     case PH_IDLE:
@@ -514,21 +519,24 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         if (last_substep) {
             c->phase = PH_IDLE;
             c->frame_done = true;
+            frame_end = true;
         } else {
             c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
             c->substep++;
         }
     }
 
-    /* Register writes (strand_top's register file and the units' pin flags). */
+    /* Register writes (strand_regfile and the units' pin flags); a frame ending sets irq
+       after IRQ_ACK clears it (frame_ctrl). */
     if (in->cfg_we) {
         fx_t v = from_word(f, in->cfg_data);
         switch (in->cfg_addr) {
         case STRAND_REG_GDT2_X: c->s.gravity[0] = v; break;
         case STRAND_REG_GDT2_Y: c->s.gravity[1] = v; break;
-        case STRAND_REG_DIST:
+        case STRAND_REG_DIST: /* the chain's rest length: every link (a graph's edges have their own) */
             c->s.dist = v;
-            for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = v; /* pair_sequencer: every link */
+            if (!hp->graph)
+                for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = v;
             break;
         case STRAND_REG_IMPULSE: c->s.impulse = v; break;
         case STRAND_REG_BOX_X: c->s.box[0] = v; break;
@@ -554,7 +562,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         case STRAND_REG_LOAD_PY: c->load[1][1] = v; break;
         case STRAND_REG_LOAD_PZ: c->load[1][2] = v; break;
         case STRAND_REG_EDGE_REST: c->edge_rest = v; break;
-        case STRAND_REG_EDGE: edge_write(c, in->cfg_data); break;
+        case STRAND_REG_EDGE: /* strand_core: idle only */
+            if (phase_before == PH_IDLE) edge_write(c, in->cfg_data);
+            break;
+        case STRAND_REG_IRQ_ACK: c->irq = false; break;
         case STRAND_REG_STEP_X: c->step[0] = v; break;
         case STRAND_REG_STEP_Y: c->step[1] = v; break;
         case STRAND_REG_PIN: {
@@ -565,4 +576,5 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         default: break;
         }
     }
+    if (frame_end) c->irq = true;
 }

@@ -42,7 +42,7 @@ typedef struct {
 
 /* The outputs of strand_top during one cycle. */
 typedef struct {
-    bool frame_done;
+    bool frame_done, busy, irq;
     uint32_t rd_x, rd_y, rd_z;
     int phase;
     bool fv, fec;
@@ -75,6 +75,7 @@ typedef struct {
     int phase, substep;
     int scan_i;  /* the grab scan: nodes addressed so far */
     bool frame_done;
+    bool irq;    /* frame_ctrl: a frame ended since the last IRQ_ACK */
     fx_t mouse_q[3];
     bool mouse_down_q;
     int init_u, init_n, init_count;

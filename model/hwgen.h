@@ -10,23 +10,20 @@
 
 #include "scene.h"
 #include "sim.h"
+#include "strand_params.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
 
-/* The RTL build a scene needs. */
+/* The RTL build a scene needs: every parameter of strand_core (the table of
+   scripts/gen_params.py, lower-case names: w, f, m, k, ..., en_springs, ...) and
+   its derived widths (uw, iw, aw, cw, sw, dbg_w). */
 typedef struct {
-    int w, f, m, k, sqrt_bits, div_bits, iter, substeps;
-    bool en_gravity, en_damping, en_mouse, en_constraints, en_springs, en_ground;
-    int ground_axis;   /* 0 x, 1 y */
-    bool ground_above; /* nodes stay at or above the boundary (the scene's normal is +axis) */
-    int rule; /* 0 centred (chain_sequencer), 1 pairwise (pair_sequencer) */
-    int dim;    /* 2 or 3 */
-    bool graph; /* a graph body: edge memories (e_rods, e_springs entries), nodes loaded one by one */
-    int e_rods, e_springs;
-    bool grab;  /* the mouse's grab form (EN_MOUSE with GRAB) */
-    int uw, iw, cw; /* derived widths, as strand_top computes them */
+#define STRAND_FIELD(NAME, name, ...) int name;
+    STRAND_PARAMS(STRAND_FIELD)
+    STRAND_DERIVED(STRAND_FIELD)
+#undef STRAND_FIELD
 } hw_params;
 
 typedef struct {
@@ -36,6 +33,7 @@ typedef struct {
 
 /* Can the RTL run this scene? NULL, or "file:line: message" in err. */
 const char *hw_check(const scene *sc, char *err, size_t len);
+/* The build a scene needs, for simulation (DEBUG = 1: the observation port). */
 void hw_params_of(const scene *sc, hw_params *hp);
 /* The register writes that set up a scene (constants, pins, then CMD init); returns the count. */
 int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max);
@@ -43,8 +41,6 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max);
 uint32_t hw_word(const fx_format *fmt, fx_t v);
 /* A {unit, node} address of a node index. */
 uint32_t hw_node_addr(const hw_params *hp, int node);
-/* Cycles per frame (step to frame_done, back to back), docs/architecture.md. */
-long hw_cycles_per_frame(const hw_params *hp);
 
 /*
  * Write DIR/params.vh, DIR/config.hex, DIR/mouse.hex and DIR/expected.hex for
@@ -55,5 +51,7 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
 #ifdef __cplusplus
 }
 #endif
+
+#include "timing.h"
 
 #endif

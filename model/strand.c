@@ -32,6 +32,8 @@ static const char *usage_main =
     "  compare SCENE    run fixed point and double side by side and print the error\n"
     "  hwgen SCENE DIR  write the RTL parameters, setup writes, mouse script and expected\n"
     "                   positions of a scene into DIR (for the testbenches)\n"
+    "  info SCENE       the RTL build the scene needs: every core parameter, the derived\n"
+    "                   widths and the cycle counts (--json for scripts)\n"
     "\n"
     "'strand COMMAND --help' describes each command's options.\n";
 
@@ -61,6 +63,13 @@ static const char *usage_compare = "usage: strand compare SCENE [--frames N] [--
 static const char *usage_hwgen = "usage: strand hwgen SCENE DIR [--frames N]\n"
                                  "Write DIR/params.vh, config.hex, mouse.hex and expected.hex: what the RTL build\n"
                                  "and its frame-level testbench need for SCENE. Exit 2 if the RTL cannot run SCENE.\n";
+
+static const char *usage_info = "usage: strand info SCENE [--json | --vflags]\n"
+                                "Print the strand_core build SCENE needs (every parameter, as 'strand hwgen' derives it),\n"
+                                "its derived widths and its cycle counts (model/timing.c). With --json, one JSON object\n"
+                                "for scripts: params, derived, timing, and rtl (false with why when the RTL cannot run\n"
+                                "SCENE; the figures are then those of the build it would need). With --vflags, the\n"
+                                "build as Verilog parameter overrides (-GW=32 -GEN_GRAVITY=1'b1 ...) on one line.\n";
 
 static int bad_arg(const char *cmd, const char *fmt, const char *what)
 {
@@ -103,18 +112,19 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
     o->frames = o->format = -1;
     opterr = 0;
     optind = 1;
-    while ((c = getopt_long(argc, argv, "h", longopts, NULL)) != -1) {
+    /* the leading ':' makes a missing value ':' rather than '?' */
+    while ((c = getopt_long(argc, argv, ":h", longopts, NULL)) != -1) {
         if (c == 'h') {
             o->help = true;
             *rc = 0;
             return NULL;
         }
-        if (c == '?' || !strchr(allowed, c)) {
-            *rc = bad_arg(cmd, "unknown option '%s'", argv[optind - 1]);
+        if (c == ':') {
+            *rc = bad_arg(cmd, "option '%s' needs a value", argv[optind - 1]);
             return NULL;
         }
-        if (c == ':' ) {
-            *rc = bad_arg(cmd, "option '%s' needs a value", argv[optind - 1]);
+        if (c == '?' || !strchr(allowed, c)) {
+            *rc = bad_arg(cmd, "unknown option '%s'", argv[optind - 1]);
             return NULL;
         }
         switch (c) {
@@ -477,6 +487,73 @@ static int cmd_hwgen(int argc, char **argv)
     return 0;
 }
 
+static int cmd_info(int argc, char **argv)
+{
+    scene sc;
+    char err[SCENE_ERR_LEN];
+    const char *path = NULL;
+    bool json = false, vflags = false;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage_info, stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--json")) {
+            json = true;
+        } else if (!strcmp(argv[i], "--vflags")) {
+            vflags = true;
+        } else if (argv[i][0] == '-') {
+            return bad_arg("info", "unknown option '%s'", argv[i]);
+        } else if (!path) {
+            path = argv[i];
+        } else {
+            return bad_arg("info", "unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!path) return bad_arg("info", "%s", "needs SCENE");
+    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    hw_params hp;
+    hw_params_of(&sc, &hp);
+    const char *why = hw_check(&sc, err, sizeof err);
+    char text[2048];
+    hw_timing_text(&hp, text, (int)sizeof text);
+    if (vflags) {
+        const char *sep = "";
+#define STRAND_VFLAG(NAME, name, sw, ...) printf(sw ? "%s-G%s=1'b%d" : "%s-G%s=%d", sep, #NAME, hp.name), sep = " ";
+        STRAND_PARAMS(STRAND_VFLAG)
+#undef STRAND_VFLAG
+        printf("\n");
+    } else if (json) {
+        printf("{\"scene\": \"%s\", \"rtl\": %s, ", sc.path, why ? "false" : "true");
+        if (why) {
+            printf("\"why\": \"");
+            for (const char *q = why; *q; q++) printf(*q == '"' || *q == '\\' ? "\\%c" : "%c", *q);
+            printf("\", ");
+        }
+        const char *sep = "";
+        printf("\"params\": {");
+#define STRAND_JSON(NAME, name, ...) printf("%s\"%s\": %d", sep, #NAME, hp.name), sep = ", ";
+        STRAND_PARAMS(STRAND_JSON)
+        printf("}, \"derived\": {");
+        sep = "";
+        STRAND_DERIVED(STRAND_JSON)
+#undef STRAND_JSON
+        printf("}, \"timing\": {\"toward_latency\": %ld, \"spring_latency\": %ld, \"constraint_pass\": %ld, "
+               "\"spring_pass\": %ld, \"cycles_per_frame\": %ld}}\n",
+               hw_toward_latency(&hp), hw_spring_latency(&hp), hw_constraint_pass(&hp), hw_spring_pass(&hp),
+               hw_cycles_per_frame(&hp));
+    } else {
+        printf("%s: %s\n", sc.path, why ? why : "the RTL runs this scene with this build of strand_core:");
+#define STRAND_TEXT(NAME, name, ...) printf("  %-15s %d\n", #NAME, hp.name);
+        STRAND_PARAMS(STRAND_TEXT)
+        printf("derived:\n");
+        STRAND_DERIVED(STRAND_TEXT)
+#undef STRAND_TEXT
+        printf("cycles (model/timing.c):\n%s", text);
+    }
+    scene_free(&sc);
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -487,6 +564,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "run")) return cmd_run(argc - 1, argv + 1);
     if (!strcmp(argv[1], "compare")) return cmd_compare(argc - 1, argv + 1);
     if (!strcmp(argv[1], "hwgen")) return cmd_hwgen(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "info")) return cmd_info(argc - 1, argv + 1);
     fprintf(stderr, "strand: unknown command '%s'\n%s", argv[1], usage_main);
     return EXIT_BAD_INPUT;
 }

@@ -1,6 +1,8 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * chain_sequencer - the constraint pass of reference 000 over a chain of M x K nodes.
  *
@@ -18,20 +20,11 @@
  * toward's latency (docs/architecture.md derives it).
  *
  * Storage is read through the units' synchronous port A: rd_* address this cycle,
- * data (rd_x, rd_y, rd_pinned) next cycle.
+ * data (rd_pos, rd_pinned) next cycle. Positions are DIM lanes (lane k at bits
+ * k W +: W); the window, the datapath and the average have one lane per axis.
  */
 module chain_sequencer #(
-    parameter integer W         = 32,    // word width, bits
-    parameter integer F         = 16,    // fraction bits
-    parameter integer M         = 4,     // units
-    parameter integer K         = 5,     // nodes per unit
-    parameter integer UW        = 2,     // unit index width, >= 1
-    parameter integer IW        = 3,     // node index width, >= 1
-    parameter integer CW        = 5,     // counter width, holds M*K
-    parameter integer ITER      = 1,     // passes per constraint phase
-    parameter integer SQRT_BITS = W - 1, // root bits resolved
-    parameter integer DIV_BITS  = W - 1, // quotient bits resolved
-    parameter integer DIM       = 2      // 2, or 3: a z lane (the same steps)
+`include "strand_params.vh"
 ) (
     input  wire          clk,
     input  wire          reset,      // synchronous, active high
@@ -41,17 +34,13 @@ module chain_sequencer #(
 
     output reg  [UW-1:0] rd_uidx,    // storage read address (combinational)
     output reg  [IW-1:0] rd_nidx,
-    input  wire [W-1:0]  rd_x,       // its data, the next cycle
-    input  wire [W-1:0]  rd_y,
-    input  wire [W-1:0]  rd_z,       // DIM = 3 only
+    input  wire [DIM*W-1:0] rd_pos,  // its data, the next cycle
     input  wire          rd_pinned,
 
     output reg           wr_en,      // write C
     output wire [UW-1:0] wr_uidx,
     output wire [IW-1:0] wr_nidx,
-    output wire [W-1:0]  wr_x,
-    output wire [W-1:0]  wr_y,
-    output wire [W-1:0]  wr_z,       // DIM = 3; else 0
+    output wire [DIM*W-1:0] wr_pos,
 
     output reg  [UW-1:0] uidx,       // C's unit
     output reg  [IW-1:0] nidx,       // C's node within the unit
@@ -62,45 +51,15 @@ module chain_sequencer #(
     localparam integer N     = M * K;
     localparam integer ITW   = ITER > 1 ? $clog2(ITER) : 1;
     localparam integer N_LAST_I = N - 1;
-    localparam integer K_LAST_I = K - 1;
     localparam integer ITER_LAST_I = ITER - 1;
     localparam [CW-1:0]  N_COUNT   = N[CW-1:0];
     localparam [CW-1:0]  N_LAST    = N_LAST_I[CW-1:0];
-    localparam [IW-1:0]  K_LAST    = K_LAST_I[IW-1:0];
     localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
 
-    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
-    // $fatal for the simulators (Icarus carries on after $error).
-    initial begin
-        if (M < 1 || K < 1) begin
-`ifdef SYNTHESIS
-            $error("chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
-`else
-            $fatal(1, "chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K);
-`endif
-        end
-        if ((1 << CW) <= N) begin
-`ifdef SYNTHESIS
-            $error("chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N);
-`else
-            $fatal(1, "chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N);
-`endif
-        end
-        if ((1 << UW) < M || (1 << IW) < K) begin
-`ifdef SYNTHESIS
-            $error("chain_sequencer: UW/IW too narrow in %m");
-`else
-            $fatal(1, "chain_sequencer: UW/IW too narrow in %m");
-`endif
-        end
-        if (ITER < 1) begin
-`ifdef SYNTHESIS
-            $error("chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER);
-`else
-            $fatal(1, "chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER);
-`endif
-        end
-    end
+    `STRAND_CHECK(chain_sequencer_M_K, M >= 1 && K >= 1, ("chain_sequencer: M and K must be >= 1 (M=%0d K=%0d) in %m", M, K))
+    `STRAND_CHECK(chain_sequencer_CW, (1 << CW) > N, ("chain_sequencer: CW=%0d cannot count to N=%0d in %m", CW, N))
+    `STRAND_CHECK(chain_sequencer_UW_IW, (1 << UW) >= M && (1 << IW) >= K, ("chain_sequencer: UW/IW too narrow in %m"))
+    `STRAND_CHECK(chain_sequencer_ITER, ITER >= 1, ("chain_sequencer: ITER must be >= 1 (ITER=%0d) in %m", ITER))
 
     localparam [2:0] S_IDLE   = 3'd0, // waiting for start; node 0 is addressed
                      S_LOAD_C = 3'd1, // node 0 arrives: C; node 1 is addressed
@@ -121,18 +80,14 @@ module chain_sequencer #(
     localparam [IW-1:0] N2_N = N2_N_I[IW-1:0];
     localparam [CW-1:0] TWO  = 2;
 
-    // The next (unit, node) address.
-    function [UW+IW-1:0] next_node(input [UW-1:0] u, input [IW-1:0] n);
-        next_node = n == K_LAST ? {u + 1'b1, {IW{1'b0}}} : {u, n + 1'b1};
-    endfunction
+`include "strand_addr.vh"
 
     // ---- registers ----
     reg [2:0]     state_q, state_d;
     reg [ITW-1:0] iter_q;
-    reg [W-1:0]   ux, uy, cx, cy, dx, dy;   // the window U, C, D
+    reg [DIM*W-1:0] u_pos, c_pos, d_pos;    // the window U, C, D
     reg           c_pin, d_pin, has_u, has_d;
-    reg [W-1:0]   up_x, up_y;               // the point from U
-    reg [W-1:0]   uz, cz, dz, up_z;         // the z lane of the window (DIM = 3)
+    reg [DIM*W-1:0] up_pos;                 // the point from U
     reg           up_ok;
     reg [CW-1:0]  ahead;                    // index of the node after D
     reg [UW-1:0]  ahead_u;                  // and its address
@@ -142,29 +97,29 @@ module chain_sequencer #(
     wire last_iter = iter_q == ITER_LAST;
 
     // ---- the datapath ----
-    wire         t_done, t_valid;
-    wire [W-1:0] t_x, t_y, t_z;
-    wire         t_start = state_q == S_UP || (state_q == S_UP_W && t_done);
-    wire         from_u  = state_q == S_UP;
+    wire             t_done, t_valid;
+    wire [DIM*W-1:0] t_pos;
+    wire             t_start = state_q == S_UP || (state_q == S_UP_W && t_done);
+    wire             from_u  = state_q == S_UP;
     /* verilator lint_off PINCONNECTEMPTY */
     // busy is not needed: the FSM waits for done
     toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
         .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
-        .p_x(from_u ? ux : dx), .p_y(from_u ? uy : dy), .c_x(cx), .c_y(cy), .rest_len(rest_len),
-        .p_z(from_u ? uz : dz), .c_z(cz),
-        .busy(), .done(t_done), .t_x(t_x), .t_y(t_y), .t_z(t_z), .valid(t_valid));
+        .p(from_u ? u_pos : d_pos), .c(c_pos), .rest_len(rest_len),
+        .busy(), .done(t_done), .t(t_pos), .valid(t_valid));
     /* verilator lint_on PINCONNECTEMPTY */
 
-    // The new C, valid in S_DN_W when t_done (the point from D is t_*).
-    wire         dn_ok = has_d && t_valid;
-    wire [W-1:0] avg_x, avg_y, avg_z;
-    fx_avg #(.W(W)) u_avg_x (.a(up_x), .b(t_x), .y(avg_x));
-    fx_avg #(.W(W)) u_avg_y (.a(up_y), .b(t_y), .y(avg_y));
-    fx_avg #(.W(W)) u_avg_z (.a(up_z), .b(t_z), .y(avg_z));
-    wire [W-1:0] new_x = up_ok && dn_ok ? avg_x : up_ok ? up_x : dn_ok ? t_x : cx;
-    wire [W-1:0] new_y = up_ok && dn_ok ? avg_y : up_ok ? up_y : dn_ok ? t_y : cy;
-    wire [W-1:0] new_z = up_ok && dn_ok ? avg_z : up_ok ? up_z : dn_ok ? t_z : cz;
-    wire         moved = (up_ok || dn_ok) && !c_pin;
+    // The new C, valid in S_DN_W when t_done (the point from D is t_pos).
+    wire             dn_ok = has_d && t_valid;
+    wire [DIM*W-1:0] avg_pos;
+    genvar k;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_lane
+            fx_avg #(.W(W)) u_avg (.a(up_pos[k*W +: W]), .b(t_pos[k*W +: W]), .y(avg_pos[k*W +: W]));
+        end
+    endgenerate
+    wire [DIM*W-1:0] new_pos = up_ok && dn_ok ? avg_pos : up_ok ? up_pos : dn_ok ? t_pos : c_pos;
+    wire             moved   = (up_ok || dn_ok) && !c_pin;
 
     // ---- storage read address: data arrives the cycle after ----
     always @* begin
@@ -217,7 +172,7 @@ module chain_sequencer #(
             end
             if (state_q == S_NEXT) begin
                 counter <= counter + 1'b1;
-                if (!last_node) {uidx, nidx} <= next_node(uidx, nidx);
+                if (!last_node) {uidx, nidx} <= next_node({uidx, nidx});
             end
         end
     end
@@ -226,16 +181,12 @@ module chain_sequencer #(
     always @(posedge clk) begin
         case (state_q)
             S_LOAD_C: begin
-                cx    <= rd_x;
-                cy    <= rd_y;
-                cz    <= DIM == 3 ? rd_z : {W{1'b0}};
+                c_pos <= rd_pos;
                 c_pin <= rd_pinned;
                 has_u <= 1'b0;
             end
             S_LOAD_D: begin
-                dx      <= rd_x;
-                dy      <= rd_y;
-                dz      <= DIM == 3 ? rd_z : {W{1'b0}};
+                d_pos   <= rd_pos;
                 d_pin   <= rd_pinned;
                 has_d   <= N > 1;
                 ahead   <= TWO;
@@ -243,32 +194,20 @@ module chain_sequencer #(
                 ahead_n <= N2_N;
             end
             S_UP_W: if (t_done) begin
-                up_x  <= t_x;
-                up_y  <= t_y;
-                up_z  <= t_z;
-                up_ok <= has_u && t_valid;
+                up_pos <= t_pos;
+                up_ok  <= has_u && t_valid;
             end
-            S_DN_W: if (t_done && moved) begin  // a pinned C stays where it is, in the window too
-                cx <= new_x;
-                cy <= new_y;
-                cz <= new_z;
-            end
+            S_DN_W: if (t_done && moved) c_pos <= new_pos;  // a pinned C stays where it is, in the window too
             S_NEXT: begin
-                ux    <= cx;
-                uy    <= cy;
-                uz    <= cz;
+                u_pos <= c_pos;
                 has_u <= 1'b1;
-                cx    <= dx;
-                cy    <= dy;
-                cz    <= dz;
+                c_pos <= d_pos;
                 c_pin <= d_pin;
                 has_d <= ahead < N_COUNT;
-                dx    <= rd_x;
-                dy    <= rd_y;
-                dz    <= DIM == 3 ? rd_z : {W{1'b0}};
+                d_pos <= rd_pos;
                 d_pin <= rd_pinned;
                 ahead <= ahead + 1'b1;
-                {ahead_u, ahead_n} <= next_node(ahead_u, ahead_n);
+                {ahead_u, ahead_n} <= next_node({ahead_u, ahead_n});
             end
             default: ;
         endcase
@@ -277,9 +216,7 @@ module chain_sequencer #(
     // C's write: the cycle after its new position is known (S_NEXT).
     assign wr_uidx = uidx;
     assign wr_nidx = nidx;
-    assign wr_x    = cx;
-    assign wr_y    = cy;
-    assign wr_z    = cz;
+    assign wr_pos  = c_pos;
     assign fec     = counter == N_COUNT;
 
 endmodule

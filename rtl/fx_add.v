@@ -1,6 +1,8 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * fx_add - saturating fixed-point add / subtract.
  *
@@ -9,8 +11,9 @@
  *
  * Ports:   a, b, y are signed two's complement, W bits, any Q format (the binary
  *          point does not move in an add, so F is not a parameter).
- * Algorithm: both operands are sign-extended to W+1 bits; the W+1-bit sum or
- *          difference is exact (its range is [-2^W+1, 2^W-1]). If its two top
+ * Algorithm: both operands are sign-extended to W+1 bits; one adder forms
+ *          a + b, or a + ~b + 1 = a - b (b inverted, sub as the carry in). The
+ *          W+1-bit result is exact (its range is [-2^W+1, 2^W-1]). If its two top
  *          bits differ the result left the W-bit range and is clamped to
  *          2^(W-1)-1 (positive overflow) or -2^(W-1) (negative overflow).
  * Rounding: none (exact).
@@ -27,16 +30,11 @@ module fx_add #(
     output reg          sat  // 1 when y was clamped
 );
 
-    initial begin
-        if (W < 8 || W > 32) begin
-            $error("fx_add: W must be 8..32 (W=%0d) in %m", W);
-            $fatal(1, "fx_add: bad parameters in %m");
-        end
-    end
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_add: W must be 8..32 (W=%0d) in %m", W))
 
     wire [W:0] a_ext = {a[W-1], a};
-    wire [W:0] b_ext = {b[W-1], b};
-    wire [W:0] sum   = sub ? a_ext - b_ext : a_ext + b_ext; // exact in W+1 bits
+    wire [W:0] b_ext = {b[W-1], b} ^ {(W+1){sub}};       // ~b when subtracting
+    wire [W:0] sum   = a_ext + b_ext + {{W{1'b0}}, sub}; // exact in W+1 bits
 
     always @* begin
         sat = sum[W] ^ sum[W-1];

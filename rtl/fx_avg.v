@@ -1,6 +1,8 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * fx_avg - average of two fixed-point values, rounded to nearest, ties to even.
  *
@@ -26,12 +28,7 @@ module fx_avg #(
     output wire [W-1:0] y  // signed, W bits: round((a + b) / 2), ties to even
 );
 
-    initial begin
-        if (W < 8 || W > 32) begin
-            $error("fx_avg: W must be 8..32 (W=%0d) in %m", W);
-            $fatal(1, "fx_avg: bad parameters in %m");
-        end
-    end
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_avg: W must be 8..32 (W=%0d) in %m", W))
 
     wire [W:0]   s = {a[W-1], a} + {b[W-1], b}; // exact sum
     wire [W-1:0] q = s[W:1];                    // floor(s / 2), always fits W bits

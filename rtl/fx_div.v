@@ -1,6 +1,8 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * fx_div - iterative unsigned fixed-point divider, one quotient bit per clock.
  *
@@ -65,17 +67,12 @@ module fx_div #(
     output wire         sat          // den != 0, quotient clamped to 2^(W-1)-1
 );
 
-    // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses
-    // the $error). FS and DB are clamped copies of F and DIV_BITS so that
-    // elaboration gets as far as reporting them.
-    initial begin
-        if (W < 8 || W > 32) $error("fx_div: W must be 8..32 (W=%0d) in %m", W);
-        if (F < 1 || F > W - 2) $error("fx_div: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F);
-        if (DIV_BITS < 1 || DIV_BITS > W - 1)
-            $error("fx_div: DIV_BITS must be 1..W-1 (W=%0d DIV_BITS=%0d) in %m", W, DIV_BITS);
-        if (W < 8 || W > 32 || F < 1 || F > W - 2 || DIV_BITS < 1 || DIV_BITS > W - 1)
-            $fatal(1, "fx_div: bad parameters in %m");
-    end
+    // FS and DB are clamped copies of F and DIV_BITS so that elaboration gets as far
+    // as reporting them.
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_div: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(F_must_be_1_to_W_minus_2, F >= 1 && F <= W - 2, ("fx_div: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F))
+    `STRAND_CHECK(DIV_BITS_must_be_1_to_W_minus_1, DIV_BITS >= 1 && DIV_BITS <= W - 1,
+                  ("fx_div: DIV_BITS must be 1..W-1 (W=%0d DIV_BITS=%0d) in %m", W, DIV_BITS))
 
     localparam integer M        = W - 1;               // magnitude bits of the quotient
     localparam integer FS       = (F < 1) ? 1 : (F > W - 2) ? W - 2 : F; // F, clamped

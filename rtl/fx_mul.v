@@ -1,6 +1,8 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * fx_mul - fixed-point multiply, rounded to nearest (ties to even), saturated.
  *
@@ -32,14 +34,9 @@ module fx_mul #(
     output wire [2*W-1:0] prod  // the exact product, signed Q(2W-2F).2F (sums of squares use it unrounded)
 );
 
-    // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses
-    // the $error). FS is a clamped copy of F so that elaboration gets as far as
-    // reporting it.
-    initial begin
-        if (W < 8 || W > 32) $error("fx_mul: W must be 8..32 (W=%0d) in %m", W);
-        if (F < 1 || F > W - 2) $error("fx_mul: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F);
-        if (W < 8 || W > 32 || F < 1 || F > W - 2) $fatal(1, "fx_mul: bad parameters in %m");
-    end
+    // FS is a clamped copy of F so that elaboration gets as far as reporting it.
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_mul: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(F_must_be_1_to_W_minus_2, F >= 1 && F <= W - 2, ("fx_mul: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F))
 
     localparam integer FS = (F < 1) ? 1 : (F > W - 2) ? W - 2 : F; // F, clamped
     localparam integer QW = 2 * W - FS;                            // width of the shifted product

@@ -1,6 +1,8 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * fx_sqrt - iterative fixed-point square root, one result bit per clock.
  *
@@ -60,16 +62,10 @@ module fx_sqrt #(
     output wire           sat       // result was clamped to 2^(W-1)-1
 );
 
-    // Bad parameters: $error, then $fatal at time 0 in simulation (Yosys refuses
-    // the $error). SB is a clamped copy of SQRT_BITS so that elaboration gets as
-    // far as reporting it.
-    initial begin
-        if (W < 8 || W > 32) $error("fx_sqrt: W must be 8..32 (W=%0d) in %m", W);
-        if (SQRT_BITS < 1 || SQRT_BITS > W - 1)
-            $error("fx_sqrt: SQRT_BITS must be 1..W-1 (W=%0d SQRT_BITS=%0d) in %m", W, SQRT_BITS);
-        if (W < 8 || W > 32 || SQRT_BITS < 1 || SQRT_BITS > W - 1)
-            $fatal(1, "fx_sqrt: bad parameters in %m");
-    end
+    // SB is a clamped copy of SQRT_BITS so that elaboration gets as far as reporting it.
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_sqrt: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(SQRT_BITS_must_be_1_to_W_minus_1, SQRT_BITS >= 1 && SQRT_BITS <= W - 1,
+                  ("fx_sqrt: SQRT_BITS must be 1..W-1 (W=%0d SQRT_BITS=%0d) in %m", W, SQRT_BITS))
 
     localparam integer M    = W - 1;                 // magnitude bits of the root
     localparam integer SB   = (SQRT_BITS < 1) ? 1 : (SQRT_BITS > M) ? M : SQRT_BITS; // clamped

@@ -1,262 +1,220 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
- * pair_sequencer - a pass over the links of a chain of M x K nodes: the pairwise
- * constraint pass (references 001 struts, 002; SPRING = 0) or the spring force pass
- * (references 001, 004; SPRING = 1).
+ * pair_sequencer - a pass over the links of a chain of M x K nodes, or the edges
+ * of a graph: the pairwise constraint pass (references 001 struts, 002; SPRING = 0)
+ * or the spring force pass (references 001, 004; SPRING = 1).
  *
  * SPRING = 1: for each link, model/engine_body.h spring_edge(): the spring_force
  * datapath gives the force F on a (-F on b) from both ends' positions and previous
  * positions; the ends' gathered forces become acc_a + F and acc_b - F (saturating),
- * written through the units' force port (wr_* carry the force); pins do not matter
- * (pinned nodes ignore their force); a zero length writes nothing. Each link then
- * takes LS + 5 cycles, LS = SQRT_BITS + 2 DIV_BITS + 15. The rest of this header
+ * written through the units' force port (wr_pos carries the force); pins do not
+ * matter (pinned nodes ignore their force); a zero length writes nothing. Each link
+ * then takes LS + 5 cycles, LS = spring_force's latency. The rest of this header
  * describes SPRING = 0.
  *
- * Walks the links (a, b) = (i, i+1), i = 0 .. N-2, in order, ITER times, and for
+ * Walks the links (a, b) = (i, i+1), i = 0 .. N-2, in order, PASSES times, and for
  * each computes model/engine_body.h pair_edge(): the excess e = d - d * rest/|d|
  * along d = b - a (the `toward` datapath in excess mode); both ends free: h = e/2
  * (fx_avg with 0: rounded ties-to-even), a += h, b -= h, so the midpoint stays bit
  * for bit; one end pinned: the other takes all of e; both pinned, or a zero length:
  * nothing is written. uidx/nidx are a's address, counter the links finished, and
- * FEC = (counter == N - 1).
+ * FEC = (counter == the links of a pass).
  *
  * Timing, fixed whatever the data: each link takes LT + 5 cycles (read a, read b,
- * start toward, LT cycles until it is done, write a, write b), LT = SQRT_BITS +
- * DIV_BITS + 9; a pass over the N - 1 links takes (N - 1) * (LT + 5) cycles after
- * the start cycle; done is high the cycle after the last pass.
+ * start toward, LT cycles until it is done, write a, write b), LT = toward's
+ * latency; a pass over the N - 1 links takes (N - 1) (LT + 5) cycles after the start
+ * cycle; done is high the cycle after the last pass (model/timing.c has the formula).
  *
- * GRAPH = 1 (graph bodies): the pass walks E edges of an edge memory instead of the
- * chain's links: edge j joins nodes a_j and b_j with rest length rest_j (rest_len is
- * not used); counter counts edges and FEC = (counter == E). The memory is loaded
- * through e_we (a, b, rest appended in order; reset empties it). Timing is the
- * same per edge: a pass takes E (LT + 5) cycles (LS + 5 for springs).
+ * GRAPH = 1 (graph bodies): the pass walks the E edges of an edge memory instead of
+ * the chain's links: edge j joins nodes a_j and b_j with rest length rest_j (rest_len
+ * is not used); counter counts edges and FEC = (counter == E). The memory (a
+ * strand_ram, not reset) is filled through e_we, edges appended in order; reset
+ * empties it (the fill count). An entry not filled since reset is an edge from node 0
+ * to node 0 of rest 0: a zero length, nothing written. It is read one cycle ahead:
+ * in S_RD_A the entry of this edge (b, rest; a is already in uidx/nidx), in S_GO
+ * the entry of the next (its a). Timing is the same per edge: a pass takes E (LT + 5)
+ * cycles (LS + 5 for springs).
  *
- * DIM = 3 adds the z lane to every read, datapath and write.
- *
- * Storage is read through the units' synchronous port A (address now, data next
- * cycle) and written through their write port (wr_* are valid in the write cycle).
+ * Positions are DIM lanes (lane k at bits k W +: W). Storage is read through the
+ * units' synchronous port A (address now, data next cycle) and written through
+ * their write port (wr_* are valid in the write cycle).
  */
 module pair_sequencer #(
-    parameter integer W         = 32,    // word width, bits
-    parameter integer F         = 16,    // fraction bits
-    parameter integer M         = 4,     // units
-    parameter integer K         = 5,     // nodes per unit
-    parameter integer UW        = 2,     // unit index width, >= 1
-    parameter integer IW        = 3,     // node index width, >= 1
-    parameter integer CW        = 5,     // counter width, holds M*K
-    parameter integer ITER      = 1,     // passes per constraint phase
-    parameter integer SQRT_BITS = W - 1, // root bits resolved
-    parameter integer DIV_BITS  = W - 1, // quotient bits resolved
-    parameter [0:0]   SPRING    = 1'b0,  // 0: pairwise constraint, 1: spring force
-    parameter integer DIM       = 2,     // 2, or 3: a z lane
-    parameter [0:0]   GRAPH     = 1'b0,  // 0: the chain's links, 1: an edge memory
-    parameter integer E         = 1      // GRAPH: edges in the memory (>= 1)
+`include "strand_params.vh"
+    ,
+    parameter [0:0]   SPRING = 1'b0, // 0: pairwise constraint, 1: spring force
+    parameter integer PASSES = 1,  // passes per start (the constraints: ITER; springs: 1)
+    parameter integer E      = 1   // GRAPH: entries of the edge memory (>= 1)
 ) (
-    input  wire          clk,
-    input  wire          reset,      // synchronous, active high
-    input  wire          start,      // one-cycle pulse: run ITER passes
-    output reg           done,       // one-cycle pulse after the last pass
-    input  wire [W-1:0]  rest_len,   // rest length of every link (chain)
-    input  wire          e_we,       // GRAPH: append an edge to the memory
-    input  wire [UW+IW-1:0] e_a,     //   its ends, {unit, node}
-    input  wire [UW+IW-1:0] e_b,
-    input  wire [W-1:0]  e_rest,     //   its rest length
-    input  wire [W-1:0]  ks,         // SPRING: stiffness and damping, scaled (model init())
-    input  wire [W-1:0]  kd,
+    input  wire             clk,
+    input  wire             reset,      // synchronous, active high
+    input  wire             start,      // one-cycle pulse: run PASSES passes
+    output reg              done,       // one-cycle pulse after the last pass
+    input  wire [W-1:0]     rest_len,   // rest length of every link (chain)
+    input  wire             e_we,       // GRAPH: append an edge to the memory
+    input  wire [AW-1:0]    e_a,        //   its ends, {unit, node}
+    input  wire [AW-1:0]    e_b,
+    input  wire [W-1:0]     e_rest,     //   its rest length
+    input  wire [W-1:0]     ks,         // SPRING: stiffness and damping, scaled (model init())
+    input  wire [W-1:0]     kd,
 
-    output reg  [UW-1:0] rd_uidx,    // storage read address (combinational)
-    output reg  [IW-1:0] rd_nidx,
-    input  wire [W-1:0]  rd_x,       // its data, the next cycle
-    input  wire [W-1:0]  rd_y,
-    input  wire [W-1:0]  rd_z,       // DIM = 3 only, as every z port
-    input  wire          rd_pinned,
-    input  wire [W-1:0]  rd_px,      // SPRING: previous position and gathered force
-    input  wire [W-1:0]  rd_py,
-    input  wire [W-1:0]  rd_accx,
-    input  wire [W-1:0]  rd_accy,
-    input  wire [W-1:0]  rd_pz,
-    input  wire [W-1:0]  rd_accz,
+    output reg  [UW-1:0]    rd_uidx,    // storage read address (combinational)
+    output reg  [IW-1:0]    rd_nidx,
+    input  wire [DIM*W-1:0] rd_pos,     // its data, the next cycle
+    input  wire             rd_pinned,
+    input  wire [DIM*W-1:0] rd_prev,    // SPRING: previous position and gathered force
+    input  wire [DIM*W-1:0] rd_acc,
 
-    output wire          wr_en,      // write one end of the link now (SPRING: its force)
-    output wire [UW-1:0] wr_uidx,
-    output wire [IW-1:0] wr_nidx,
-    output wire [W-1:0]  wr_x,
-    output wire [W-1:0]  wr_y,
-    output wire [W-1:0]  wr_z,
+    output wire             wr_en,      // write one end of the link now (SPRING: its force)
+    output wire [UW-1:0]    wr_uidx,
+    output wire [IW-1:0]    wr_nidx,
+    output wire [DIM*W-1:0] wr_pos,
 
-    output reg  [UW-1:0] uidx,       // the link's first node a: unit
-    output reg  [IW-1:0] nidx,       //                          node
-    output reg  [CW-1:0] counter,    // links finished in this pass
-    output wire          fec         // counter == M x K - 1
+    output reg  [UW-1:0]    uidx,       // the link's first node a: unit
+    output reg  [IW-1:0]    nidx,       //                          node
+    output reg  [CW-1:0]    counter,    // links finished in this pass
+    output wire             fec         // counter == the links of a pass
 );
 
-    localparam integer N = M * K;
-    localparam integer LINKS_I = GRAPH ? E : N - 1;           // links (edges) per pass
+    localparam integer N           = M * K;
+    localparam integer LINKS_I     = GRAPH ? E : N - 1;           // links (edges) per pass
     localparam integer LAST_LINK_I = LINKS_I > 0 ? LINKS_I - 1 : 0;
-    localparam integer AW = UW + IW;                          // a node address
-    localparam integer EW = E > 1 ? $clog2(E) : 1;            // an edge index
-    localparam integer ITW = ITER > 1 ? $clog2(ITER) : 1;
-    localparam integer K_LAST_I = K - 1;
-    localparam integer ITER_LAST_I = ITER - 1;
+    localparam integer EW          = E > 1 ? $clog2(E) : 1;       // an edge index
+    localparam integer ITW         = PASSES > 1 ? $clog2(PASSES) : 1;
+    localparam integer PASS_LAST_I = PASSES - 1;
     localparam [CW-1:0]  LINKS     = LINKS_I[CW-1:0];
     localparam [CW-1:0]  LAST_LINK = LAST_LINK_I[CW-1:0];
-    localparam [IW-1:0]  K_LAST    = K_LAST_I[IW-1:0];
-    localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
+    localparam [ITW-1:0] PASS_LAST = PASS_LAST_I[ITW-1:0];
 
-    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
-    // $fatal for the simulators (Icarus carries on after $error).
-    initial begin
-        if (M < 1 || K < 1 || ITER < 1 || (1 << CW) <= LINKS_I || (1 << CW) <= N || E < 1 || (DIM != 2 && DIM != 3)) begin
-`ifdef SYNTHESIS
-            $error("pair_sequencer: M, K, ITER must be >= 1 and CW must hold M*K (M=%0d K=%0d ITER=%0d CW=%0d) in %m", M, K, ITER, CW);
-`else
-            $fatal(1, "pair_sequencer: M, K, ITER must be >= 1 and CW must hold M*K (M=%0d K=%0d ITER=%0d CW=%0d) in %m", M, K, ITER, CW);
-`endif
-        end
-    end
+    `STRAND_CHECK(pair_sequencer_counts, PASSES >= 1 && E >= 1 && (1 << CW) > LINKS_I,
+                  ("pair_sequencer: PASSES, E must be >= 1 and CW must count the links (PASSES=%0d E=%0d CW=%0d) in %m",
+                   PASSES, E, CW))
 
     localparam [2:0] S_IDLE = 3'd0, // waiting for start
-                     S_RD_A = 3'd1, // a is addressed
+                     S_RD_A = 3'd1, // a is addressed (GRAPH: and this edge's entry)
                      S_RD_B = 3'd2, // a arrives; b is addressed
-                     S_GO   = 3'd3, // b arrives; toward starts
-                     S_WAIT = 3'd4, // until toward is done: the new a and b
+                     S_GO   = 3'd3, // b arrives; the datapath starts (GRAPH: the next edge's entry is read)
+                     S_WAIT = 3'd4, // until the datapath is done: the new a and b
                      S_WR_A = 3'd5, // write a
                      S_WR_B = 3'd6; // write b, next link
 
-    function [UW+IW-1:0] next_node(input [UW-1:0] u, input [IW-1:0] n);
-        next_node = n == K_LAST ? {u + 1'b1, {IW{1'b0}}} : {u, n + 1'b1};
-    endfunction
+`include "strand_addr.vh"
 
-    reg [2:0]     state_q, state_d;
-    reg [ITW-1:0] iter_q;
-    reg [W-1:0]   ax, ay, bx, by;       // the link's ends
-    reg [W-1:0]   az, bz, apz, aaz, baz, naz, nbz;  // their z lane (DIM = 3)
-    reg           a_pin, b_pin;
-    reg [W-1:0]   apx, apy, aax, aay;   // SPRING: a's previous position and force, b's force
-    reg [W-1:0]   bax, bay;
-    reg [W-1:0]   nax, nay, nbx, nby;   // their new positions
-    reg           wa, wb;               // which are written
-    wire [UW-1:0] b_u;
-    wire [IW-1:0] b_n;
-    wire [AW-1:0] next_a;     // the next link's a
-    wire [AW-1:0] first_a;    // the first link's a: node 0 (chain), or edge 0's a (graph)
-    wire [W-1:0]  link_rest;  // this link's rest length
+    reg [2:0]        state_q, state_d;
+    reg [ITW-1:0]    iter_q;
+    reg [DIM*W-1:0]  a_pos, b_pos;        // the link's ends
+    reg              a_pin, b_pin;
+    reg [DIM*W-1:0]  a_prev, a_acc, b_acc; // SPRING: a's previous position and force, b's force
+    reg [DIM*W-1:0]  a_new, b_new;        // what a and b become
+    reg              wa, wb;              // which are written
+    wire [AW-1:0]    b_addr;     // this link's b
+    wire [AW-1:0]    next_a;     // the next link's a (valid in S_WR_B)
+    wire [AW-1:0]    first_a;    // the first link's a: node 0 (chain), or edge 0's a (graph)
+    wire [W-1:0]     link_rest;  // this link's rest length (valid from S_RD_B)
+    reg  [AW-1:0]    b_addr_q;   // b, for its write
 
     // ---- the links: implied (chain) or from the edge memory (graph) ----
     generate
         if (GRAPH) begin : g_edges
-            reg [AW-1:0] ea [0:E-1];
-            reg [AW-1:0] eb [0:E-1];
-            reg [W-1:0]  er [0:E-1];
-            reg [EW:0]   fill;      // edges loaded
-            integer j;
+            reg  [EW:0]    fill;      // edges loaded since reset
+            reg  [AW-1:0]  first_q;   // edge 0's a (the walk starts there before any read)
+            wire [EW-1:0]  cur = counter < LINKS ? counter[EW-1:0] : {EW{1'b0}};
+            wire [EW-1:0]  nxt = counter + 1'b1 < LINKS ? cur + 1'b1 : {EW{1'b0}};
+            wire           rd_next = state_q == S_GO;
+            wire [EW-1:0]  raddr = rd_next ? nxt : cur;
+            wire [2*AW+W-1:0] entry;   // {rest, b, a}
+            reg            entry_ok;   // the entry read was filled
             always @(posedge clk) begin
                 if (reset) begin
-                    fill <= {(EW+1){1'b0}};
-                    for (j = 0; j < E; j = j + 1) begin
-                        ea[j] <= {AW{1'b0}};
-                        eb[j] <= {AW{1'b0}};
-                        er[j] <= {W{1'b0}};
-                    end
+                    fill    <= {(EW+1){1'b0}};
+                    first_q <= {AW{1'b0}};
                 end else if (e_we && fill < E[EW:0]) begin
-                    ea[fill[EW-1:0]] <= e_a;
-                    eb[fill[EW-1:0]] <= e_b;
-                    er[fill[EW-1:0]] <= e_rest;
                     fill <= fill + 1'b1;
+                    if (fill == {(EW+1){1'b0}}) first_q <= e_a;
                 end
+                if (state_q == S_RD_A || rd_next) entry_ok <= {1'b0, raddr} < fill;
             end
-            wire [EW-1:0] cur = counter < LINKS ? counter[EW-1:0] : {EW{1'b0}};
-            wire [EW-1:0] nxt = counter + 1'b1 < LINKS ? cur + 1'b1 : {EW{1'b0}};
-            assign {b_u, b_n} = eb[cur];
-            assign next_a     = ea[nxt];
-            assign first_a    = ea[0];
-            assign link_rest  = er[cur];
+            /* verilator lint_off PINCONNECTEMPTY */
+            // one reader
+            strand_ram #(.WIDTH(2 * AW + W), .DEPTH(E), .ABITS(EW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_edges (
+                .clk(clk), .we(e_we && fill < E[EW:0]), .waddr(fill[EW-1:0]), .wdata({e_rest, e_b, e_a}),
+                .re_a(state_q == S_RD_A || rd_next), .raddr_a(raddr), .rdata_a(entry),
+                .re_b(1'b0), .raddr_b({EW{1'b0}}), .rdata_b());
+            /* verilator lint_on PINCONNECTEMPTY */
+            assign b_addr    = entry_ok ? entry[2*AW-1:AW] : {AW{1'b0}};
+            assign link_rest = entry_ok ? entry[2*AW +: W] : {W{1'b0}};
+            assign next_a    = entry_ok ? entry[AW-1:0] : {AW{1'b0}};
+            assign first_a   = first_q;
             wire unused_chain = &{1'b0, rest_len};
         end else begin : g_links
-            assign {b_u, b_n} = next_node(uidx, nidx);
-            assign next_a     = {b_u, b_n};
-            assign first_a    = {AW{1'b0}};
-            assign link_rest  = rest_len;
+            assign b_addr    = next_node({uidx, nidx});
+            assign next_a    = b_addr_q;
+            assign first_a   = {AW{1'b0}};
+            assign link_rest = rest_len;
             wire unused_graph = &{1'b0, e_we, e_a, e_b, e_rest};
         end
     endgenerate
 
-
     wire last_link = counter == LAST_LINK;
-    wire last_iter = iter_q == ITER_LAST;
+    wire last_iter = iter_q == PASS_LAST;
 
     // ---- the datapath ----
-    wire         t_done, t_valid;
-    wire [W-1:0] sum_ax, sum_ay, dif_bx, dif_by, sum_az, dif_bz;  // the new values of a and b
+    wire             t_done, t_valid;
+    wire [DIM*W-1:0] a_sum, b_sum;  // the new values of a and b
+    genvar k;
     generate
         if (SPRING) begin : g_spring
             // F from both ends; a's force + F, b's force - F
-            wire [W-1:0] fx, fy, fz;
+            wire [DIM*W-1:0] force_a;
             /* verilator lint_off PINCONNECTEMPTY */
             // busy is not needed: the FSM waits for done; saturation is the result itself
             spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_force (
                 .clk(clk), .reset(reset), .start(state_q == S_GO),
-                .a_x(ax), .a_y(ay), .a_px(apx), .a_py(apy), .a_z(az), .a_pz(apz),
-                .b_x(rd_x), .b_y(rd_y), .b_px(rd_px), .b_py(rd_py),  // b arrives as the force starts
-                .b_z(rd_z), .b_pz(rd_pz),
+                .a(a_pos), .a_p(a_prev), .b(rd_pos), .b_p(rd_prev),  // b arrives as the force starts
                 .rest_len(link_rest), .ks(ks), .kd(kd),
-                .busy(), .done(t_done), .f_x(fx), .f_y(fy), .f_z(fz), .valid(t_valid));
-            fx_add #(.W(W)) u_az (.sub(1'b0), .a(aaz), .b(fz), .y(sum_az), .sat());
-            fx_add #(.W(W)) u_bz (.sub(1'b1), .a(baz), .b(fz), .y(dif_bz), .sat());
-            fx_add #(.W(W)) u_ax (.sub(1'b0), .a(aax), .b(fx), .y(sum_ax), .sat());
-            fx_add #(.W(W)) u_ay (.sub(1'b0), .a(aay), .b(fy), .y(sum_ay), .sat());
-            fx_add #(.W(W)) u_bx (.sub(1'b1), .a(bax), .b(fx), .y(dif_bx), .sat());
-            fx_add #(.W(W)) u_by (.sub(1'b1), .a(bay), .b(fy), .y(dif_by), .sat());
+                .busy(), .done(t_done), .f(force_a), .valid(t_valid));
+            for (k = 0; k < DIM; k = k + 1) begin : g_lane
+                fx_add #(.W(W)) u_a (.sub(1'b0), .a(a_acc[k*W +: W]), .b(force_a[k*W +: W]), .y(a_sum[k*W +: W]), .sat());
+                fx_add #(.W(W)) u_b (.sub(1'b1), .a(b_acc[k*W +: W]), .b(force_a[k*W +: W]), .y(b_sum[k*W +: W]), .sat());
+            end
             /* verilator lint_on PINCONNECTEMPTY */
-            wire unused_pins = &{1'b0, a_pin, b_pin, bx, by, bz};
+            wire unused_pins = &{1'b0, a_pin, b_pin, b_pos};
         end else begin : g_pair
             // the excess e = d - d * rest/|d|, then the split
-            wire [W-1:0] ex, ey, ez;
+            wire [DIM*W-1:0] excess;
+            wire             both_free = !a_pin && !b_pin;
             /* verilator lint_off PINCONNECTEMPTY */
             // busy is not needed: the FSM waits for done
             toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
                 .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
-                .p_x(ax), .p_y(ay), .c_x(rd_x), .c_y(rd_y), .rest_len(link_rest),  // b arrives as toward starts
-                .p_z(az), .c_z(rd_z),
-                .busy(), .done(t_done), .t_x(ex), .t_y(ey), .t_z(ez), .valid(t_valid));
+                .p(a_pos), .c(rd_pos), .rest_len(link_rest),  // b arrives as toward starts
+                .busy(), .done(t_done), .t(excess), .valid(t_valid));
+            for (k = 0; k < DIM; k = k + 1) begin : g_lane
+                wire [W-1:0] e = excess[k*W +: W];
+                wire [W-1:0] h;   // e / 2
+                fx_avg #(.W(W)) u_h (.a(e), .b({W{1'b0}}), .y(h));
+                wire [W-1:0] move = both_free ? h : e;  // what a and b move by
+                // saturation flags are not needed: the saturated value is the result
+                fx_add #(.W(W)) u_a (.sub(1'b0), .a(a_pos[k*W +: W]), .b(move), .y(a_sum[k*W +: W]), .sat());
+                fx_add #(.W(W)) u_b (.sub(1'b1), .a(b_pos[k*W +: W]), .b(move), .y(b_sum[k*W +: W]), .sat());
+            end
             /* verilator lint_on PINCONNECTEMPTY */
-            wire [W-1:0] hx, hy, hz;   // e / 2
-            fx_avg #(.W(W)) u_hx (.a(ex), .b({W{1'b0}}), .y(hx));
-            fx_avg #(.W(W)) u_hy (.a(ey), .b({W{1'b0}}), .y(hy));
-            fx_avg #(.W(W)) u_hz (.a(ez), .b({W{1'b0}}), .y(hz));
-            wire         both_free = !a_pin && !b_pin;
-            wire [W-1:0] da_x = both_free ? hx : ex, da_y = both_free ? hy : ey;  // what a and b move by
-            wire [W-1:0] da_z = both_free ? hz : ez;
-            /* verilator lint_off PINCONNECTEMPTY */
-            // saturation flags are not needed: the saturated value is the result
-            fx_add #(.W(W)) u_ax (.sub(1'b0), .a(ax), .b(da_x), .y(sum_ax), .sat());
-            fx_add #(.W(W)) u_ay (.sub(1'b0), .a(ay), .b(da_y), .y(sum_ay), .sat());
-            fx_add #(.W(W)) u_bx (.sub(1'b1), .a(bx), .b(da_x), .y(dif_bx), .sat());
-            fx_add #(.W(W)) u_by (.sub(1'b1), .a(by), .b(da_y), .y(dif_by), .sat());
-            fx_add #(.W(W)) u_az (.sub(1'b0), .a(az), .b(da_z), .y(sum_az), .sat());
-            fx_add #(.W(W)) u_bz (.sub(1'b1), .a(bz), .b(da_z), .y(dif_bz), .sat());
-            /* verilator lint_on PINCONNECTEMPTY */
-            wire unused_force = &{1'b0, ks, kd, apx, apy, aax, aay, bax, bay, apz, aaz, baz};
+            wire unused_force = &{1'b0, ks, kd, a_prev, a_acc, b_acc, rd_prev, rd_acc};
         end
     endgenerate
 
     // ---- storage access ----
     always @* begin
-        rd_uidx = uidx;   // S_RD_A and otherwise: a
-        rd_nidx = nidx;
-        if (state_q == S_RD_B) begin
-            rd_uidx = b_u;
-            rd_nidx = b_n;
-        end
+        {rd_uidx, rd_nidx} = {uidx, nidx};   // S_RD_A and otherwise: a
+        if (state_q == S_RD_B) {rd_uidx, rd_nidx} = b_addr;
     end
     assign wr_en   = (state_q == S_WR_A && wa) || (state_q == S_WR_B && wb);
-    assign wr_uidx = state_q == S_WR_B ? b_u : uidx;
-    assign wr_nidx = state_q == S_WR_B ? b_n : nidx;
-    assign wr_x    = state_q == S_WR_B ? nbx : nax;
-    assign wr_y    = state_q == S_WR_B ? nby : nay;
-    assign wr_z    = DIM == 3 ? (state_q == S_WR_B ? nbz : naz) : {W{1'b0}};
+    assign {wr_uidx, wr_nidx} = state_q == S_WR_B ? b_addr_q : {uidx, nidx};
+    assign wr_pos  = state_q == S_WR_B ? b_new : a_new;
     assign fec     = counter == LINKS;
 
     // ---- next state ----
@@ -311,35 +269,22 @@ module pair_sequencer #(
     always @(posedge clk) begin
         case (state_q)
             S_RD_B: begin
-                ax    <= rd_x;
-                ay    <= rd_y;
-                a_pin <= rd_pinned;
-                apx   <= rd_px;
-                apy   <= rd_py;
-                aax   <= rd_accx;
-                aay   <= rd_accy;
-                az    <= DIM == 3 ? rd_z : {W{1'b0}};
-                apz   <= DIM == 3 ? rd_pz : {W{1'b0}};
-                aaz   <= DIM == 3 ? rd_accz : {W{1'b0}};
+                a_pos    <= rd_pos;
+                a_pin    <= rd_pinned;
+                a_prev   <= rd_prev;
+                a_acc    <= rd_acc;
+                b_addr_q <= b_addr;
             end
             S_GO: begin
-                bx    <= rd_x;
-                by    <= rd_y;
+                b_pos <= rd_pos;
                 b_pin <= rd_pinned;
-                bax   <= rd_accx;
-                bay   <= rd_accy;
-                bz    <= DIM == 3 ? rd_z : {W{1'b0}};
-                baz   <= DIM == 3 ? rd_accz : {W{1'b0}};
+                b_acc <= rd_acc;
             end
             S_WAIT: if (t_done) begin
-                nax <= sum_ax;
-                nay <= sum_ay;
-                nbx <= dif_bx;
-                nby <= dif_by;
-                naz <= sum_az;
-                nbz <= dif_bz;
-                wa  <= t_valid && (SPRING || !a_pin);
-                wb  <= t_valid && (SPRING || !b_pin);
+                a_new <= a_sum;
+                b_new <= b_sum;
+                wa    <= t_valid && (SPRING || !a_pin);
+                wb    <= t_valid && (SPRING || !b_pin);
             end
             default: ;
         endcase

@@ -1,35 +1,38 @@
 `default_nettype none
 `timescale 1ns / 1ps
 
+`include "strand_defs.vh"
+
 /*
  * toward - the point at distance `rest_len` from P in the direction of C, or the
  * excess of C's distance from P over `rest_len`.
  *
  * Computes model/engine_body.h toward() (excess = 0) or the core of pair_edge()
- * (excess = 1): with d = C - P (saturating subtract),
+ * (excess = 1): with d = C - P (saturating subtract, per axis),
  *     len = fx_sqrt(d.x^2 + d.y^2 [+ d.z^2])   radicand: exact 2W-bit sum of squares
  *     r   = fx_div(rest_len, len)       rest_len / len, unsigned, Q.F
  *     T   = P + d * r                   excess = 0: fx_mul (rounded ties-to-even), fx_add
  *     T   = d - d * r                   excess = 1: the excess e, fx_mul, fx_sub
  * valid = 0 when len = 0 (the divider's divide-by-zero flag): the caller skips T.
  *
- * Ports: p_*, c_* signed Q(W-F).F; rest_len unsigned Q(W-F).F (> 0); t_* signed Q(W-F).F.
+ * Ports: p, c are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W, x first);
+ * rest_len unsigned Q(W-F).F (> 0); t as p.
  *
- * Datapath: one W x W multiplier, shared by the two squares and the two products
+ * Datapath: one W x W multiplier, shared by the DIM squares and the DIM products
  * (its exact 2W-bit product for the squares, its rounded result for the products),
- * one fx_sqrt and one fx_div.
- *
- * DIM = 3 adds a z lane: one more square (d.z^2, after d.y^2) and one more product.
+ * one fx_sqrt and one fx_div; the axis counter `ax` picks the lane.
  *
  * Timing, fixed whatever the data (the cycle model mirrors it). Counting the
  * cycle in which start is high as cycle 0: cycles 1 .. DIM square d.x, d.y (and
  * d.z), the last of them starts the square root; the root is there in cycle
  * SQRT_BITS+DIM+2 and starts the divider in that cycle; the quotient is there
  * DIV_BITS+2 cycles later; the next DIM cycles form T.x, T.y (and T.z); done is
- * high in cycle LATENCY = SQRT_BITS + DIV_BITS + 2 DIM + 5, for one cycle. Each
- * lane's result is new from the cycle after its product (t_x from LATENCY - DIM + 1),
- * the last lane's and valid from cycle LATENCY: read them at done. They hold until
- * the next operation forms them. start is accepted only when idle or in the done cycle.
+ * high in cycle LATENCY = SQRT_BITS + DIV_BITS + 2 DIM + 5 (model/timing.c
+ * hw_toward_latency), for one cycle. Each lane's result is new from the cycle after
+ * its product (lane x from LATENCY - DIM + 1), the last lane's and valid from cycle
+ * LATENCY: read them at done. They hold until the next operation forms them.
+ * start is accepted only when idle or in the done cycle. Throughput: one operation
+ * per LATENCY + 1 cycles.
  */
 module toward #(
     parameter integer W         = 32,    // word width, bits
@@ -38,95 +41,70 @@ module toward #(
     parameter integer DIV_BITS  = W - 1, // quotient bits resolved
     parameter integer DIM       = 2      // 2, or 3: a z lane
 ) (
-    input  wire         clk,
-    input  wire         reset,  // synchronous, active high
-    input  wire         start,  // sample P, C, rest_len and excess
-    input  wire         excess, // 0: T = P + d*r (centred rule), 1: T = d - d*r (pairwise rule)
-    input  wire [W-1:0] p_x,
-    input  wire [W-1:0] p_y,
-    input  wire [W-1:0] c_x,
-    input  wire [W-1:0] c_y,
-    input  wire [W-1:0] p_z,    // DIM = 3 only
-    input  wire [W-1:0] c_z,
-    input  wire [W-1:0] rest_len,
-    output wire         busy,
-    output wire         done,   // one-cycle pulse: t_x, t_y, valid are new
-    output reg  [W-1:0] t_x,
-    output reg  [W-1:0] t_y,
-    output reg  [W-1:0] t_z,    // DIM = 3; else 0
-    output reg          valid   // 0: zero length, no direction
+    input  wire             clk,
+    input  wire             reset,  // synchronous, active high
+    input  wire             start,  // sample P, C, rest_len and excess
+    input  wire             excess, // 0: T = P + d*r (centred rule), 1: T = d - d*r (pairwise rule)
+    input  wire [DIM*W-1:0] p,
+    input  wire [DIM*W-1:0] c,
+    input  wire [W-1:0]     rest_len,
+    output wire             busy,
+    output wire             done,   // one-cycle pulse: t and valid are new
+    output reg  [DIM*W-1:0] t,
+    output reg              valid   // 0: zero length, no direction
 );
 
-    // Bad parameters stop elaboration: $error for Yosys (0.23 has no $fatal),
-    // $fatal for the simulators (Icarus carries on after $error).
-    initial begin
-        if (W < 8 || W > 32) begin
-`ifdef SYNTHESIS
-            $error("toward: W must be 8..32 (W=%0d) in %m", W);
-`else
-            $fatal(1, "toward: W must be 8..32 (W=%0d) in %m", W);
-`endif
-        end
-    end
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("toward: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(DIM_must_be_2_or_3, DIM == 2 || DIM == 3, ("toward: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
-    localparam [3:0] S_IDLE = 4'd0, // waiting for start
-                     S_SQX  = 4'd1, // square d.x
-                     S_SQY  = 4'd2, // square d.y (2D: start the root)
-                     S_SQRT = 4'd3, // wait for the root, then start the divider
-                     S_DIV  = 4'd4, // wait for the quotient
-                     S_MX   = 4'd5, // T.x = P.x + d.x * r
-                     S_MY   = 4'd6, // T.y = P.y + d.y * r
-                     S_SQZ  = 4'd7, // DIM = 3: square d.z, start the root
-                     S_MZ   = 4'd8; // DIM = 3: T.z = P.z + d.z * r
-    localparam [3:0] S_ROOT = DIM == 3 ? S_SQZ : S_SQY; // the state that starts the root
-    localparam [3:0] S_LAST = DIM == 3 ? S_MZ : S_MY;   // the last product
+    localparam [2:0] S_IDLE = 3'd0, // waiting for start
+                     S_SQ   = 3'd1, // square d[ax]; the last lane starts the root
+                     S_SQRT = 3'd2, // wait for the root, then start the divider
+                     S_DIV  = 3'd3, // wait for the quotient
+                     S_MUL  = 3'd4; // T[ax] = P[ax] + d[ax] * r (or d[ax] - d[ax] * r)
+    localparam integer  DIM_LAST_I = DIM - 1;
+    localparam [1:0]    DIM_LAST = DIM_LAST_I[1:0];
 
-    reg [3:0]     state_q, state_d;
-    reg           done_q, done_d;
-    reg [W-1:0]   dx_q, dy_q, px_q, py_q, rest_q, r_q;
-    reg [W-1:0]   dz_lane_q, pz_q;  // DIM = 3 (constant 0 in 2D, removed by synthesis)
-    reg           excess_q;
-    reg           dz_q;
-    reg [2*W-1:0] sq_q;   // d.x^2
+    reg [2:0]       state_q, state_d;
+    reg [1:0]       ax_q, ax_d;       // the lane of S_SQ and S_MUL
+    reg             done_q, done_d;
+    reg [DIM*W-1:0] d_q, p_q;
+    reg [W-1:0]     rest_q, r_q;
+    reg             excess_q;
+    reg             dz_q;
+    reg [2*W-1:0]   sq_q;             // the squares so far
 
-    // ---- the shared multiplier ----
-    reg  [W-1:0]   mul_a, mul_b;
+    wire [W-1:0] d_ax = d_q[ax_q * W +: W];
+    wire [W-1:0] p_ax = p_q[ax_q * W +: W];
+    wire         ax_last = ax_q == DIM_LAST;
+
+    // ---- the shared multiplier: d[ax]^2, then d[ax] * r ----
     wire [W-1:0]   mul_round;
     wire [2*W-1:0] mul_exact;
     /* verilator lint_off PINCONNECTEMPTY */
     // the multiplier's saturation flag is not used: saturation is the result itself
-    fx_mul #(.W(W), .F(F)) u_mul (.a(mul_a), .b(mul_b), .y(mul_round), .prod(mul_exact), .sat());
+    fx_mul #(.W(W), .F(F)) u_mul (.a(d_ax), .b(state_q == S_MUL ? r_q : d_ax), .y(mul_round), .prod(mul_exact), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
-    always @* begin
-        mul_a = dx_q;
-        mul_b = dx_q;
-        case (state_q)
-            S_SQY:   begin mul_a = dy_q; mul_b = dy_q; end
-            S_SQZ:   begin mul_a = dz_lane_q; mul_b = dz_lane_q; end
-            S_MX:    begin mul_a = dx_q; mul_b = r_q;  end
-            S_MY:    begin mul_a = dy_q; mul_b = r_q;  end
-            S_MZ:    begin mul_a = dz_lane_q; mul_b = r_q; end
-            default: ;
-        endcase
-    end
-
-    // ---- subtract, add ----
-    wire [W-1:0] dx_new, dy_new, dz_new, t_sum;
+    // ---- the lanes: d = C - P at start; one adder forms T[ax] ----
+    wire [DIM*W-1:0] d_new;
+    wire [W-1:0]     t_sum;
     /* verilator lint_off PINCONNECTEMPTY */
-    fx_add #(.W(W)) u_dx (.sub(1'b1), .a(c_x), .b(p_x), .y(dx_new), .sat());
-    fx_add #(.W(W)) u_dy (.sub(1'b1), .a(c_y), .b(p_y), .y(dy_new), .sat());
-    fx_add #(.W(W)) u_dz (.sub(1'b1), .a(c_z), .b(p_z), .y(dz_new), .sat());
-    wire [W-1:0] t_base = excess_q ? (state_q == S_MZ ? dz_lane_q : state_q == S_MY ? dy_q : dx_q)
-                                   : (state_q == S_MZ ? pz_q : state_q == S_MY ? py_q : px_q);
-    fx_add #(.W(W)) u_t  (.sub(excess_q), .a(t_base), .b(mul_round), .y(t_sum), .sat());
+    // saturation flags are not needed: the saturated value is the result
+    genvar k;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_lane
+            fx_add #(.W(W)) u_d (.sub(1'b1), .a(c[k*W +: W]), .b(p[k*W +: W]), .y(d_new[k*W +: W]), .sat());
+        end
+    endgenerate
+    fx_add #(.W(W)) u_t (.sub(excess_q), .a(excess_q ? d_ax : p_ax), .b(mul_round), .y(t_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
-    wire         sqrt_start = state_q == S_ROOT;
-    wire [2*W-1:0] radicand = sq_q + mul_exact; // each square <= 2^(2W-2), so a sum of three fits 2W bits
-    wire         sqrt_done, div_done, div_zero;
-    wire [W-1:0] root, quot;
+    wire           sqrt_start = state_q == S_SQ && ax_last;
+    wire [2*W-1:0] radicand   = sq_q + mul_exact; // each square <= 2^(2W-2), so a sum of three fits 2W bits
+    wire           sqrt_done, div_done, div_zero;
+    wire [W-1:0]   root, quot;
     /* verilator lint_off PINCONNECTEMPTY */
     // busy and saturation flags are not needed: the FSM counts on the fixed latency
     fx_sqrt #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (
@@ -140,17 +118,14 @@ module toward #(
     // ---- control ----
     always @* begin
         state_d = state_q;
+        ax_d    = ax_q;
         done_d  = 1'b0;
         case (state_q)
-            S_IDLE:  if (start) state_d = S_SQX;
-            S_SQX:   state_d = S_SQY;
-            S_SQY:   state_d = DIM == 3 ? S_SQZ : S_SQRT;
-            S_SQZ:   state_d = S_SQRT;
-            S_SQRT:  if (sqrt_done) state_d = S_DIV;
-            S_DIV:   if (div_done) state_d = S_MX;
-            S_MX:    state_d = S_MY;
-            S_MY:    if (DIM == 3) state_d = S_MZ; else begin state_d = S_IDLE; done_d = 1'b1; end
-            S_MZ:    begin state_d = S_IDLE; done_d = 1'b1; end
+            S_IDLE: if (start) begin state_d = S_SQ; ax_d = 2'd0; end
+            S_SQ:   if (ax_last) state_d = S_SQRT; else ax_d = ax_q + 1'b1;
+            S_SQRT: if (sqrt_done) state_d = S_DIV;
+            S_DIV:  if (div_done) begin state_d = S_MUL; ax_d = 2'd0; end
+            S_MUL:  if (ax_last) begin state_d = S_IDLE; done_d = 1'b1; end else ax_d = ax_q + 1'b1;
             default: state_d = S_IDLE;
         endcase
     end
@@ -158,35 +133,28 @@ module toward #(
     always @(posedge clk) begin
         if (reset) begin
             state_q <= S_IDLE;
+            ax_q    <= 2'd0;
             done_q  <= 1'b0;
-            t_x     <= {W{1'b0}};
-            t_y     <= {W{1'b0}};
-            t_z     <= {W{1'b0}};
+            t       <= {(DIM*W){1'b0}};
             valid   <= 1'b0;
         end else begin
             state_q <= state_d;
+            ax_q    <= ax_d;
             done_q  <= done_d;
-            if (state_q == S_MX) t_x <= t_sum;
-            if (state_q == S_MY) t_y <= t_sum;
-            if (state_q == S_MZ) t_z <= t_sum;
-            if (state_q == S_LAST) valid <= !dz_q;
+            if (state_q == S_MUL) t[ax_q * W +: W] <= t_sum;
+            if (state_q == S_MUL && ax_last) valid <= !dz_q;
         end
     end
 
     // Datapath registers: written in their own state only, so no reset.
     always @(posedge clk) begin
         if (state_q == S_IDLE && start) begin
-            dx_q   <= dx_new;
-            dy_q   <= dy_new;
-            px_q   <= p_x;
-            py_q   <= p_y;
-            dz_lane_q <= DIM == 3 ? dz_new : {W{1'b0}};
-            pz_q   <= DIM == 3 ? p_z : {W{1'b0}};
+            d_q      <= d_new;
+            p_q      <= p;
             excess_q <= excess;
-            rest_q <= rest_len;
+            rest_q   <= rest_len;
         end
-        if (state_q == S_SQX) sq_q <= mul_exact;
-        if (state_q == S_SQY && DIM == 3) sq_q <= radicand;  // d.x^2 + d.y^2, d.z^2 follows
+        if (state_q == S_SQ) sq_q <= ax_q == 2'd0 ? mul_exact : radicand;
         if (state_q == S_DIV && div_done) begin
             r_q  <= quot;
             dz_q <= div_zero;

@@ -1,24 +1,24 @@
 #!/usr/bin/env bash
-# build_harness.sh SCENE OUTDIR [DEFINES...] - the Verilator harness for SCENE's build.
+# build_harness.sh SCENE OUTDIR [RTLDIR] - the Verilator harness for SCENE's build.
 #
 # 'strand hwgen' writes OUTDIR/params.vh and params.h (the build the scene needs);
-# Verilator compiles sim_top (strand_top with those parameters) with the C++
-# harness, linked with the C model library. Extra arguments (e.g.
-# +define+STRAND_FAULT_FLIP) go to Verilator. The binary is OUTDIR/harness; an
-# unchanged build is not rebuilt.
+# Verilator compiles sim_top (strand_core with those parameters, its observation port
+# unpacked) with the C++ harness, linked with the C model library. RTLDIR (default
+# rtl/) is where the RTL comes from: a copy with a planted fault (tb/faults.py) is
+# built the same way. The binary is OUTDIR/harness; an unchanged build is not rebuilt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scene=$1 out=$2
-shift 2
+scene=$1 out=$2 rtl=${3:-rtl}
 build=${BUILD:-build}
 root=$(pwd)
+case $rtl in /*) ;; *) rtl=$root/$rtl ;; esac
 mkdir -p "$out"
 # one build of a directory at a time (two runs may want the same harness at once)
 exec 9>"$out.lock"
 flock 9
 "$build/strand" hwgen "$scene" "$out.gen" --frames 1 >/dev/null
-# rebuild only when the build parameters, the defines or a source changed
-stamp="$(cat "$out.gen/params.vh" | grep -v Generated) $* $(cat rtl/*.v tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
+# rebuild only when the build parameters or a source changed
+stamp="$(grep -v Generated "$out.gen/params.vh") $rtl $(cat "$rtl"/*.v "$rtl"/*.vh "$build"/gen/*.vh tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
 if [ -x "$out/harness" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$stamp" ]; then exit 0; fi
 cp "$out.gen/params.vh" "$out.gen/params.h" "$out/"
 rm -rf "$out/obj"
@@ -31,9 +31,9 @@ if command -v ccache >/dev/null 2>&1; then
 fi
 verilator --cc --exe --build -j 2 -O3 --trace-fst --x-assign unique --x-initial unique "${objcache[@]}" \
   -Mdir "$out/obj" --top-module sim_top -o "$root/$out/harness" \
-  -I"$root/$build/gen" -I"$root/$out" -I"$root/rtl" "$@" \
+  -I"$root/$build/gen" -I"$root/$out" -I"$rtl" \
   -CFLAGS "-O2 -I$root/model -I$root/$build/gen -I$root/$out $(pkg-config --cflags inih cairo)" \
   -LDFLAGS "$root/$build/libstrand.a $(pkg-config --libs inih cairo) -lm" \
-  "$root/tb/sim_top.v" $(for f in rtl/*.v; do echo "$root/$f"; done) "$root/tb/harness.cpp" >"$out/build.log" 2>&1 \
+  "$root/tb/sim_top.v" $(for f in "$rtl"/*.v; do echo "$f"; done) "$root/tb/harness.cpp" >"$out/build.log" 2>&1 \
   || { cat "$out/build.log"; exit 1; }
 echo "$stamp" >"$out/stamp"

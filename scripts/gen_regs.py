@@ -42,7 +42,8 @@ REGS = [
     ("LOAD_PZ", 29, "a node's previous position for a NODE write, z (DIM = 3; Q.F)"),
     ("NODE", 30, "write a node address {unit, node}: that node takes LOAD (a pinned one at rest); idle only"),
     ("EDGE_REST", 31, "the rest length of the next EDGE write (GRAPH; Q.F)"),
-    ("EDGE", 32, "GRAPH: append an edge {spring, b, a} (addresses {unit, node}) to the rod or the spring memory"),
+    ("EDGE", 32, "GRAPH: append an edge {spring, b, a} (addresses {unit, node}) to the rod or the spring memory; idle only"),
+    ("IRQ_ACK", 33, "write: clear the frame-done interrupt (irq)"),
 ]
 
 

@@ -15,15 +15,16 @@ harness with its own stimulus seed and random initial values
 middle of frames. A failure prints the scene's seed; --replay SEED runs that
 one scene again (the scene file is kept in build/fuzz/).
 
---scene FILE runs a given scene (its whole length) too; --faults builds the RTL
-with its planted faults and checks that each is reported at the cycle the model
-predicts; --reset-seeds K runs the first --scene with K random-initialisation seeds
+--scene FILE runs a given scene (its whole length) too; --faults builds copies of
+the RTL with the planted faults of tb/faults.py and checks that each is reported at
+the cycle the model predicts; --reset-seeds K runs the first --scene with K random-initialisation seeds
 and checks that every output of every cycle is the same as with zeros.
 Harnesses live in build/vl/b_<hash of the build>, shared by every run.
 """
 import argparse
 import concurrent.futures
 import hashlib
+import json
 import os
 import random
 import subprocess
@@ -31,56 +32,41 @@ import sys
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("BUILD", "build")
+sys.path.insert(0, os.path.join(ROOT, "tb"))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+import faults  # noqa: E402  (the planted faults: copies of rtl/)
+
 FIXED_BUILDS = ["sim/scenes/ref000_rope.scene", "tb/scenes/chain_q10_8.scene", "tb/scenes/chain_k4_bits.scene"]
 
 
-# params.vh defines -> the fields random_build() draws (one description of a build for both)
-PARAM_FIELDS = {"W": "width", "F": "frac", "M": "units", "K": "nodes_per_unit", "SQRT_BITS": "sqrt_bits",
-                "DIV_BITS": "div_bits", "ITER": "iterations", "SUBSTEPS": "substeps", "EN_GRAVITY": "gravity",
-                "EN_DAMPING": "damping", "EN_MOUSE": "mouse", "EN_CONSTRAINTS": "constraints", "RULE": "rule",
-                "EN_SPRINGS": "springs", "EN_GROUND": "ground", "GROUND_AXIS": "ground_axis",
-                "GROUND_ABOVE": "ground_above", "DIM": "dim", "GRAPH": "graph", "E_RODS": "e_rods",
-                "E_SPRINGS": "e_springs", "GRAB": "grab"}
-
-
 def read_build(path):
-    """The build a scene file needs, as 'strand hwgen' derives it (the one source of parameters)."""
-    out = os.path.join(ROOT, BUILD, "vl", "scene-params", hashlib.sha1(path.encode()).hexdigest()[:10])
-    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "hwgen", path, out, "--frames", "1"], cwd=ROOT,
+    """The build a scene file needs: strand_core's parameters as 'strand info' derives them
+    (the one source of parameters: model/hwgen.c and the table of scripts/gen_params.py)."""
+    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"], cwd=ROOT,
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if p.returncode != 0:
-        sys.exit(f"{p.stdout.strip()}\nFAIL lockstep: no RTL build for {path}")
-    build = {}
-    with open(os.path.join(out, "params.vh")) as fh:
-        for line in fh:
-            parts = line.split()
-            if len(parts) == 3 and parts[0] == "`define" and parts[1][len("STRAND_"):] in PARAM_FIELDS:
-                value = int(parts[2].split("'b")[-1])
-                build[PARAM_FIELDS[parts[1][len("STRAND_"):]]] = value
-    missing = set(PARAM_FIELDS.values()) - set(build)
-    if missing:
-        sys.exit(f"FAIL lockstep: {out}/params.vh lacks {sorted(missing)}")
-    for key in ("gravity", "damping", "mouse", "constraints", "springs", "ground", "ground_above", "graph", "grab"):
-        build[key] = bool(build[key])
-    build["rule"] = ["centred", "pairwise"][build["rule"]]
-    return build
+    info = json.loads(p.stdout) if p.returncode == 0 and p.stdout.startswith("{") else None
+    if info is None or not info["rtl"]:
+        why = info["why"] if info else p.stdout.strip()
+        sys.exit(f"{why}\nFAIL lockstep: no RTL build for {path}")
+    return info["params"]
 
 
 def random_build(rng):
+    """A build drawn as strand_core parameters (the scene written for it makes hwgen derive them)."""
     w = rng.choice([12, 16, 18, 20, 24, 32])
     f = rng.randint(max(2, w // 3), w - 5)
-    b = {"width": w, "frac": f, "units": rng.randint(1, 4), "nodes_per_unit": rng.randint(1, 6),
-            "sqrt_bits": rng.randint(max(3, w // 2), w - 1), "div_bits": rng.randint(max(3, w // 2), w - 1),
-            "iterations": rng.randint(1, 3), "substeps": rng.randint(1, 2),
-            "gravity": rng.random() < 0.8, "damping": rng.random() < 0.4, "mouse": rng.random() < 0.7,
-            "constraints": rng.random() < 0.85, "rule": rng.choice(["centred", "pairwise"]),
-            "springs": rng.random() < 0.4, "ground": rng.random() < 0.3, "ground_axis": rng.randint(0, 1),
-            "ground_above": rng.random() < 0.5, "dim": rng.choice([2, 2, 3]), "graph": rng.random() < 0.3}
-    if b["graph"]:
-        b["rule"] = "pairwise"  # a graph has no chain to walk
-    b["grab"] = b["mouse"] and rng.random() < 0.35   # the grab form of the mouse
-    if b["dim"] == 3 and rng.random() < 0.4:
-        b["ground_axis"] = 2    # the floor of a 3D scene
+    b = {"W": w, "F": f, "M": rng.randint(1, 4), "K": rng.randint(1, 6),
+         "SQRT_BITS": rng.randint(max(3, w // 2), w - 1), "DIV_BITS": rng.randint(max(3, w // 2), w - 1),
+         "ITER": rng.randint(1, 3), "SUBSTEPS": rng.randint(1, 2),
+         "EN_GRAVITY": rng.random() < 0.8, "EN_DAMPING": rng.random() < 0.4, "EN_MOUSE": rng.random() < 0.7,
+         "EN_CONSTRAINTS": rng.random() < 0.85, "RULE": rng.randint(0, 1),
+         "EN_SPRINGS": rng.random() < 0.4, "EN_GROUND": rng.random() < 0.3, "GROUND_AXIS": rng.randint(0, 1),
+         "GROUND_ABOVE": rng.random() < 0.5, "DIM": rng.choice([2, 2, 3]), "GRAPH": rng.random() < 0.3}
+    if b["GRAPH"]:
+        b["RULE"] = 1  # a graph has no chain to walk: the pairwise rule
+    b["GRAB"] = b["EN_MOUSE"] and rng.random() < 0.35   # the grab form of the mouse
+    if b["DIM"] == 3 and rng.random() < 0.4:
+        b["GROUND_AXIS"] = 2    # the floor of a 3D scene
     return b
 
 
@@ -92,12 +78,12 @@ def builds_for(seed, extra):
 def scene_text(build, seed):
     """A valid scene for `build`, its run-time values drawn from `seed`: a chain or a graph, 2D or 3D."""
     rng = random.Random(f"scene-{seed}")
-    w, f = build["width"], build["frac"]
-    dim = build.get("dim", 2)
-    graph = build.get("graph", False)
+    w, f = build["W"], build["F"]
+    dim = build["DIM"]
+    graph = build["GRAPH"]
     span = 2.0 ** (w - f - 1)           # the format's range is +-span
     lsb = 2.0 ** -f
-    n = build["units"] * build["nodes_per_unit"]
+    n = build["M"] * build["K"]
     if graph:
         n = max(n, 2)
     reach = span / 4                    # keep the body well inside the range
@@ -109,9 +95,9 @@ def scene_text(build, seed):
     rest = max(sum(abs(x) for x in step[:dim]), 64 * lsb) * rng.uniform(0.5, 1.6)
     frames = rng.randint(3, 10)
     lines = [f"; random scene, seed {seed}", "[scene]", f"name = fuzz_{seed}", f"dim = {dim}",
-             "[format]", f"width = {w}", f"frac = {f}", f"sqrt_bits = {build['sqrt_bits']}", f"div_bits = {build['div_bits']}",
-             "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['substeps']}", f"iterations = {build['iterations']}"]
-    if build["damping"]:
+             "[format]", f"width = {w}", f"frac = {f}", f"sqrt_bits = {build['SQRT_BITS']}", f"div_bits = {build['DIV_BITS']}",
+             "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['SUBSTEPS']}", f"iterations = {build['ITER']}"]
+    if build["EN_DAMPING"]:
         lines.append(f"damping = {rng.uniform(lsb * 4, 0.3):.6f}")
     pins = sorted(rng.sample(range(n), rng.randint(0, min(3, n))))
     nodes = [[start[k] + i * step[k] + (rng.uniform(-1, 1) * rest / 2 if graph else 0) for k in range(3)] for i in range(n)]
@@ -119,41 +105,41 @@ def scene_text(build, seed):
         # nodes near a line, so lengths stay small; edges between random pairs, every node on one
         lines += ["[graph]"]
         lines += [f"node = {vec(p)}" for p in nodes]
-        kinds = (["rod", "strut"] if build["constraints"] else []) + (["spring"] if build.get("springs") else [])
+        kinds = (["rod", "strut"] if build["EN_CONSTRAINTS"] else []) + (["spring"] if build.get("EN_SPRINGS") else [])
         # the edge count is the build's (E_RODS, E_SPRINGS are build parameters); the pairs are the scene's
-        extra = (build["units"] * 7 + build["nodes_per_unit"] * 3 + build["width"]) % (n + 1)
+        extra = (build["M"] * 7 + build["K"] * 3 + build["W"]) % (n + 1)
         pairs = [(i, i + 1) for i in range(n - 1)] + [tuple(rng.sample(range(n), 2)) for _ in range(extra)]
         if kinds:
             for i, (a, b) in enumerate(pairs):
                 rest_e = f" {rng.uniform(0.5, 1.5) * rest:.6f}" if rng.random() < 0.5 else ""
                 lines.append(f"edge = {a} {b} {kinds[i % len(kinds)]}{rest_e}")
     else:
-        lines += ["[chain]", f"units = {build['units']}", f"nodes_per_unit = {build['nodes_per_unit']}",
+        lines += ["[chain]", f"units = {build['M']}", f"nodes_per_unit = {build['K']}",
                   f"start = {vec(start)}", f"step = {vec(step)}", f"rest = {rest:.6f}"]
     if pins:
         lines.append("pinned = " + " ".join(map(str, pins)))
     if rng.random() < 0.3:  # the whole body starts moving
         lines.append(f"velocity = {vec([rng.uniform(-1, 1) * reach / 20 for _ in range(3)])}")
-    if build["gravity"]:
-        g = rng.uniform(0, reach / 50) * build["substeps"] ** 2
+    if build["EN_GRAVITY"]:
+        g = rng.uniform(0, reach / 50) * build["SUBSTEPS"] ** 2
         lines += ["[gravity]", f"accel = {vec([rng.uniform(-0.3, 0.3) * g, -g, rng.uniform(-0.3, 0.3) * g])}"]
-    if build["constraints"]:
-        lines += ["[constraints]", f"rule = {build['rule']}"]
-    if build.get("springs"):
+    if build["EN_CONSTRAINTS"]:
+        lines += ["[constraints]", f"rule = {['centred', 'pairwise'][build['RULE']]}"]
+    if build.get("EN_SPRINGS"):
         # ks h^2 / m up to 0.5 (h = 1 / substeps): from soft to near the stability bound
-        sub = build["substeps"]
+        sub = build["SUBSTEPS"]
         lines += ["[springs]", f"ks = {rng.uniform(0.01, 0.5) * sub * sub:.6f}", f"kd = {rng.uniform(0, 0.2) * sub:.6f}"]
-    if build.get("ground"):
+    if build.get("EN_GROUND"):
         # a boundary through the body, so that nodes hit it from the start
-        ax = build["ground_axis"]
+        ax = build["GROUND_AXIS"]
         mid = start[ax] + step[ax] * n / 2
-        normal = ("+" if build["ground_above"] else "-") + "xyz"[ax]
+        normal = ("+" if build["GROUND_ABOVE"] else "-") + "xyz"[ax]
         lines += ["[ground]", f"normal = {normal}", f"level = {mid + rng.uniform(-1, 1) * abs(step[ax]) * n / 2:.6f}",
                   f"radius = {rng.uniform(0, 4 * lsb):.6f}", f"friction = {rng.uniform(0, 1):.4f}"]
-    if build["mouse"]:
+    if build["EN_MOUSE"]:
         box = min(rng.uniform(rest, 4 * rest + 8 * lsb), reach)
         lines += ["[mouse]", f"box = {vec([box] * 3)}"]
-        lines += ["mode = grab"] if build.get("grab") else [f"impulse = {rng.uniform(-rest, rest):.6f}"]
+        lines += ["mode = grab"] if build.get("GRAB") else [f"impulse = {rng.uniform(-rest, rest):.6f}"]
         frame = 0
         while frame < frames:
             p = [rng.uniform(-reach, reach) for _ in range(3)]
@@ -168,8 +154,8 @@ def build_key(build):
     return hashlib.sha1(repr(sorted(build.items())).encode()).hexdigest()[:10]
 
 
-def harness_dir(build, defines=""):
-    return os.path.join(BUILD, "vl", "b_" + build_key(build) + ("_faults" if defines else ""))
+def harness_dir(build, fault=""):
+    return os.path.join(BUILD, "vl", "b_" + build_key(build) + (f"_fault_{fault}" if fault else ""))
 
 
 def run(cmd):
@@ -203,7 +189,7 @@ def main():
     seeds = [a.replay] if a.replay is not None else [a.seed * 100000 + i for i in range(a.n)]
     fuzz = os.path.join(BUILD, "fuzz")
     os.makedirs(os.path.join(ROOT, fuzz), exist_ok=True)
-    jobs = []   # (label, harness args, build, defines)
+    jobs = []   # (label, harness args, build, planted fault or "")
     for spec in a.scene:  # PATH or PATH:FRAMES
         path, _, frames = spec.partition(":")
         jobs.append((f"scene {path}", [path] + (["--frames", frames] if frames else []), read_build(path), ""))
@@ -215,9 +201,8 @@ def main():
         jobs.append(("reset-zero", [first, "--frames", "20"], read_build(first), ""))
     if a.faults:
         fs = "tb/scenes/chain_q10_8.scene"
-        for kind in ("flip", "delay"):
-            jobs.append((f"fault {kind}", [fs, "--quiet", "--expect-fault", kind, f"+fault_{kind}"], read_build(fs),
-                         "+define+STRAND_FAULTS"))
+        for kind in faults.FAULTS:
+            jobs.append((f"fault {kind}", [fs, "--quiet", "--expect-fault", kind], read_build(fs), kind))
     for s in seeds:
         build = builds[s % len(builds)]
         path = os.path.join(fuzz, f"seed_{s}.scene")
@@ -229,11 +214,15 @@ def main():
 
     # one harness per build (cached by build_harness.sh), built two at a time
     needed = {}
-    for label, args, build, defines in jobs:
-        needed.setdefault((build_key(build), defines), (args[0], build))
+    for label, args, build, fault in jobs:
+        needed.setdefault((build_key(build), fault), (args[0], build))
     def make(item):
-        (key, defines), (path, build) = item
-        cmd = ["scripts/build_harness.sh", path, harness_dir(build, defines)] + ([defines] if defines else [])
+        (key, fault), (path, build) = item
+        rtl = "rtl"
+        if fault:  # a copy of rtl/ with the fault planted
+            rtl = os.path.join(ROOT, BUILD, "faults", fault)
+            faults.plant(fault, rtl)
+        cmd = ["scripts/build_harness.sh", path, harness_dir(build, fault), rtl]
         return key, run(cmd)
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
         for key, (rc, out) in ex.map(make, needed.items()):
@@ -243,8 +232,8 @@ def main():
                 return 1
 
     def one(job):
-        label, args, build, defines = job
-        harness = os.path.abspath(os.path.join(ROOT, harness_dir(build, defines), "harness"))
+        label, args, build, fault = job
+        harness = os.path.abspath(os.path.join(ROOT, harness_dir(build, fault), "harness"))
         workdir = os.path.join(ROOT, BUILD, "fuzz")  # where a failing run leaves mismatch.fst
         p = subprocess.run([harness] + [os.path.join(ROOT, x) if x.endswith(".scene") else x for x in args], cwd=workdir,
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
@@ -253,7 +242,7 @@ def main():
     failed = 0
     digests = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for (label, args, build, defines), rc, out in ex.map(one, jobs):
+        for (label, args, build, fault), rc, out in ex.map(one, jobs):
             lines = [l for l in out.splitlines() if l.startswith(("PASS", "FAIL", "MISMATCH"))]
             digest = [l.split()[-1] for l in out.splitlines() if "output digest" in l]
             if label.startswith("reset-"):

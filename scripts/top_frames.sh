@@ -11,12 +11,12 @@ frames=${2:-}
 build=${BUILD:-build}
 name=$(basename "$scene" .scene)
 dir=$build/hw/$name
-rtl="rtl/strand_top.v rtl/node_unit.v rtl/chain_sequencer.v rtl/pair_sequencer.v rtl/toward.v rtl/spring_force.v rtl/fx_add.v rtl/fx_mul.v rtl/fx_avg.v rtl/fx_sqrt.v rtl/fx_div.v"
+rtl="tb/sim_top.v $(ls rtl/*.v)"
 rm -rf "$dir"
 if ! "$build/strand" hwgen "$scene" "$dir" ${frames:+--frames "$frames"}; then
   echo "FAIL top_frames $name: strand hwgen failed"; exit 1
 fi
-if ! out=$(iverilog -Wall -g2005 -I "$build/gen" -I "$dir" -o "$dir/top.vvp" tb/tb_top_frames.v $rtl 2>&1) || [ -n "$out" ]; then
+if ! out=$(iverilog -Wall -g2005 -I "$build/gen" -I rtl -I "$dir" -o "$dir/top.vvp" tb/tb_top_frames.v $rtl 2>&1) || [ -n "$out" ]; then
   echo "$out"; echo "FAIL top_frames $name: iverilog reported problems"; exit 1
 fi
 result=$(cd "$dir" && timeout 900 vvp -n top.vvp 2>&1)

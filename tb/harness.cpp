@@ -22,9 +22,9 @@
 // middle of frames; the run then writes the setup again and starts the scene over,
 // and the RTL and the model must go on agreeing.
 //
-// --expect-fault needs a build with +define+STRAND_FAULTS and the matching plusarg
-// (+fault_flip or +fault_delay): it passes only if the first mismatch is at the
-// cycle the model predicts for that fault.
+// --expect-fault needs a build from a copy of the RTL with that fault planted
+// (tb/faults.py): it passes only if the first mismatch is at the cycle the model
+// predicts for that fault.
 
 #include <chrono>
 #include <cinttypes>
@@ -442,14 +442,13 @@ int main(int argc, char **argv) {
     }
     hw_params hp;
     hw_params_of(&sc, &hp);
-    const int built[] = {STRAND_W, STRAND_F, STRAND_M, STRAND_K, STRAND_SQRT_BITS, STRAND_DIV_BITS, STRAND_ITER, STRAND_SUBSTEPS,
-                         STRAND_EN_GRAVITY, STRAND_EN_DAMPING, STRAND_EN_MOUSE, STRAND_EN_CONSTRAINTS, STRAND_RULE,
-                         STRAND_EN_SPRINGS, STRAND_EN_GROUND, STRAND_GROUND_AXIS, STRAND_GROUND_ABOVE,
-                         STRAND_DIM, STRAND_GRAPH, STRAND_E_RODS, STRAND_E_SPRINGS, STRAND_GRAB};
-    const int wanted[] = {hp.w, hp.f, hp.m, hp.k, hp.sqrt_bits, hp.div_bits, hp.iter, hp.substeps,
-                          hp.en_gravity, hp.en_damping, hp.en_mouse, hp.en_constraints, hp.rule,
-                          hp.en_springs, hp.en_ground, hp.ground_axis, hp.ground_above,
-                          hp.dim, hp.graph, hp.e_rods, hp.e_springs, hp.grab};
+    // every parameter of the build params.h describes (the table of scripts/gen_params.py)
+#define STRAND_BUILT(NAME, name, ...) STRAND_##NAME,
+#define STRAND_WANTED(NAME, name, ...) hp.name,
+    const int built[] = {STRAND_PARAMS(STRAND_BUILT)};
+    const int wanted[] = {STRAND_PARAMS(STRAND_WANTED)};
+#undef STRAND_BUILT
+#undef STRAND_WANTED
     if (std::memcmp(built, wanted, sizeof built) != 0) {
         std::fprintf(stderr, "%s:1: this harness was built for another scene's parameters; build it for this one (make sim SCENE=%s)\n",
                      sc.path, sc.path);

@@ -65,16 +65,12 @@ module tb_spring_force;
     reg  [W-1:0]     fx_exp, fy_exp, prev_fx, prev_fy;
     reg              valid_exp, prev_valid;
 
-    /* verilator lint_off PINCONNECTEMPTY */
-    // the z lane's result: a 2D datapath leaves it 0
-    spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) dut (
+    // the 2D datapath (DIM = 2): lanes x, y
+    spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(2)) dut (
         .clk(clk), .reset(reset), .start(start),
-        .a_x(in[0]), .a_y(in[1]), .a_px(in[2]), .a_py(in[3]),
-        .b_x(in[4]), .b_y(in[5]), .b_px(in[6]), .b_py(in[7]),
-        .a_z({W{1'b0}}), .a_pz({W{1'b0}}), .b_z({W{1'b0}}), .b_pz({W{1'b0}}),  // DIM = 2: z is unused
+        .a({in[1], in[0]}), .a_p({in[3], in[2]}), .b({in[5], in[4]}), .b_p({in[7], in[6]}),
         .rest_len(in[8]), .ks(in[9]), .kd(in[10]),
-        .busy(busy), .done(done), .f_x(f_x), .f_y(f_y), .f_z(), .valid(valid));
-    /* verilator lint_on PINCONNECTEMPTY */
+        .busy(busy), .done(done), .f({f_y, f_x}), .valid(valid));
 
     initial forever #5 clk = !clk;
 

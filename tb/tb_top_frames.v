@@ -7,7 +7,8 @@
 /*
  * tb_top_frames - strand_top against the C frame engine, frame by frame.
  *
- * `strand hwgen SCENE DIR` writes params.vh (the build), config.hex (the setup
+ * sim_top (strand_core with its observation port unpacked) is built from the
+ * params.vh that `strand hwgen SCENE DIR` writes (the build), with config.hex (the setup
  * writes), mouse.hex (the pointer per frame) and expected.hex (every node's
  * position at every frame end, from the fixed-point frame engine). This bench
  * resets the top, writes the setup, then for every frame: drives the mouse,
@@ -18,17 +19,10 @@
  * a FAIL names the frame, the node, the axis and both values.
  */
 module tb_top_frames;
-    localparam integer W = `STRAND_W;
-    localparam integer M = `STRAND_M;
-    localparam integer K = `STRAND_K;
+`include "strand_params_scene_local.vh"
     localparam integer N = M * K;
     localparam integer FRAMES = `STRAND_FRAMES;
     localparam integer NCONFIG = `STRAND_NCONFIG;
-    localparam integer UW = M > 1 ? $clog2(M) : 1;
-    localparam integer IW = K > 1 ? $clog2(K) : 1;
-    localparam integer NE = N > `STRAND_E_RODS ? (N > `STRAND_E_SPRINGS ? N : `STRAND_E_SPRINGS)
-                                               : (`STRAND_E_RODS > `STRAND_E_SPRINGS ? `STRAND_E_RODS : `STRAND_E_SPRINGS);
-    localparam integer CW = $clog2(NE + 1);  // as strand_top derives it
     localparam integer TIMEOUT = 4 * `STRAND_CYCLES_PER_FRAME; // cycles a frame may take before we give up
 
     reg clk = 1'b0;
@@ -41,7 +35,7 @@ module tb_top_frames;
     reg [W-1:0] cfg_data = 0;
     reg [UW+IW-1:0] rd_addr = 0;
     wire [W-1:0] rd_x, rd_y, rd_z;
-    wire frame_done, fv, fec;
+    wire busy, frame_done, irq, fv, fec;
     wire [2:0] phase;
     wire [UW-1:0] uidx;
     wire [IW-1:0] nidx;
@@ -50,18 +44,10 @@ module tb_top_frames;
     wire [M*IW-1:0] wb_idx;
     wire [M*W-1:0] wb_x, wb_y, wb_z;
 
-    strand_top #(
-        .W(`STRAND_W), .F(`STRAND_F), .M(M), .K(K), .SQRT_BITS(`STRAND_SQRT_BITS), .DIV_BITS(`STRAND_DIV_BITS),
-        .ITER(`STRAND_ITER), .SUBSTEPS(`STRAND_SUBSTEPS), .EN_GRAVITY(`STRAND_EN_GRAVITY),
-        .EN_DAMPING(`STRAND_EN_DAMPING), .EN_MOUSE(`STRAND_EN_MOUSE), .EN_CONSTRAINTS(`STRAND_EN_CONSTRAINTS), .RULE(`STRAND_RULE),
-        .EN_SPRINGS(`STRAND_EN_SPRINGS), .EN_GROUND(`STRAND_EN_GROUND),
-        .GROUND_AXIS(`STRAND_GROUND_AXIS), .GROUND_ABOVE(`STRAND_GROUND_ABOVE),
-        .DIM(`STRAND_DIM), .GRAPH(`STRAND_GRAPH), .E_RODS(`STRAND_E_RODS), .E_SPRINGS(`STRAND_E_SPRINGS),
-        .GRAB(`STRAND_GRAB)
-    ) dut (
+    sim_top dut (
         .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_z(mouse_z), .mouse_down(mouse_down),
-        .step(step), .frame_done(frame_done), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
-        .rd_addr(rd_addr), .rd_x(rd_x), .rd_y(rd_y), .rd_z(rd_z), .phase(phase), .fv(fv), .fec(fec),
+        .step(step), .busy(busy), .frame_done(frame_done), .irq(irq), .cfg_we(cfg_we), .cfg_addr(cfg_addr),
+        .cfg_data(cfg_data), .rd_addr(rd_addr), .rd_x(rd_x), .rd_y(rd_y), .rd_z(rd_z), .phase(phase), .fv(fv), .fec(fec),
         .uidx(uidx), .nidx(nidx), .counter(counter),
         .wb_valid(wb_valid), .wb_idx(wb_idx), .wb_x(wb_x), .wb_y(wb_y), .wb_z(wb_z));
 
@@ -70,7 +56,8 @@ module tb_top_frames;
     // No X may reach an output once reset has been applied (every register starts as X here).
     reg checking_x = 1'b0;
     always @(negedge clk)
-        if (checking_x && ^{frame_done, rd_x, rd_y, rd_z, phase, fv, fec, uidx, nidx, counter, wb_valid, wb_idx, wb_x, wb_y, wb_z} === 1'bx) begin
+        if (checking_x && ^{busy, frame_done, irq, rd_x, rd_y, rd_z, phase, fv, fec, uidx, nidx, counter, wb_valid, wb_idx, wb_x, wb_y,
+                            wb_z} === 1'bx) begin
             $display("FAIL tb_top_frames: an output is X at time %0t after reset", $time);
             $fatal(1);
         end

@@ -66,14 +66,11 @@ module tb_toward;
     reg  [W-1:0]     px_i, py_i, cx_i, cy_i, rest_i, tx_exp, ty_exp, prev_tx, prev_ty;
     reg              ex_i, valid_exp, prev_valid;
 
-    /* verilator lint_off PINCONNECTEMPTY */
-    // the z lane's result: a 2D datapath leaves it 0
-    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS)) dut (
+    // the 2D datapath (DIM = 2): lanes x, y
+    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(2)) dut (
         .clk(clk), .reset(reset), .start(start), .excess(excess),
-        .p_x(p_x), .p_y(p_y), .c_x(c_x), .c_y(c_y), .rest_len(rest_len),
-        .p_z({W{1'b0}}), .c_z({W{1'b0}}),  // the 2D datapath (DIM = 2): z is unused
-        .busy(busy), .done(done), .t_x(t_x), .t_y(t_y), .t_z(), .valid(valid));
-    /* verilator lint_on PINCONNECTEMPTY */
+        .p({p_y, p_x}), .c({c_y, c_x}), .rest_len(rest_len),
+        .busy(busy), .done(done), .t({t_y, t_x}), .valid(valid));
 
     initial forever #5 clk = !clk;
 

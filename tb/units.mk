@@ -40,6 +40,7 @@ UNITS_TIMEOUT   ?= 300
 UNITS_EXH_LANES ?= 16
 
 UNITS_NAMES := add mul avg sqrt div
+UNITS_RTL_DIR ?= $(UNITS_ROOT)/rtl
 UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v)
 UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
 UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
@@ -119,7 +120,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$^
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$^
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -131,7 +132,6 @@ endef
 $(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
 
 # ---- the datapaths: toward, spring_force ----
-UNITS_RTL_DIR  ?= $(UNITS_ROOT)/rtl
 UNITS_DP_UNITS := fx_add fx_mul fx_sqrt fx_div
 UNITS_GEN_DP   := $(UNITS_BUILD)/gen_vectors_dp
 UNITS_DP_MODEL := $(UNITS_MODEL) $(addprefix $(UNITS_ROOT)/model/,engine_fixed.c engine_body.h sim.h scene.c scene.h)
@@ -155,7 +155,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS)))
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -o $$@ $$^
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -o $$@ $$^
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -173,7 +173,7 @@ UNITS_EXH_SRC := $(UNITS_ROOT)/tb/exh_units.v $(UNITS_RTL) $(UNITS_ROOT)/tb/exha
 
 $(UNITS_EXH_BIN): $(UNITS_EXH_SRC) $(UNITS_ROOT)/model/fixed.h
 	@mkdir -p $(UNITS_EXH_DIR)
-	$(UNITS_VERILATOR) --cc --exe --build -j 2 -Wall --x-assign fast --x-initial fast \
+	$(UNITS_VERILATOR) --cc --exe --build -j 2 -Wall -I$(UNITS_ROOT)/rtl --x-assign fast --x-initial fast \
 	    --top-module exh_units -GW=12 -GF=6 -GLANES=$(UNITS_EXH_LANES) \
 	    -CFLAGS "-DEXH_W=12 -DEXH_F=6 -DEXH_LANES=$(UNITS_EXH_LANES) -I$(UNITS_ROOT)/model" \
 	    -MAKEFLAGS "OPT_FAST=-O2 OPT_GLOBAL=-O2 OPT_SLOW=-O0" \
@@ -201,15 +201,15 @@ UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -G
 lint-units:
 	@set -e; cd $(UNITS_ROOT); \
 	$(foreach u,$(UNITS_NAMES),for p in $(UNITS_LINT_PARAMS_$(u)); do \
-	    $(UNITS_VERILATOR) --lint-only -Wall $$p rtl/fx_$(u).v; done; \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -o /dev/null rtl/fx_$(u).v 2>&1); \
+	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl $$p rtl/fx_$(u).v; done; \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null rtl/fx_$(u).v 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v 2>&1); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
-	$(UNITS_VERILATOR) --lint-only -Wall --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
+	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
 	$(foreach m,toward spring_force,for p in $(UNITS_LINT_PARAMS_DP); do \
-	    $(UNITS_VERILATOR) --lint-only -Wall --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v); \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) 2>&1); \
+	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
 	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,spring_force}.v with the datapaths, are clean"
 
@@ -220,7 +220,7 @@ test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex
 	@mkdir -p $(UNITS_FAULT_DIR)
 	@sed 's/round_up = half & (sticky | q\[0\])/round_up = half/' $(UNITS_ROOT)/rtl/fx_mul.v > $(UNITS_FAULT_DIR)/fx_mul.v
 	@! cmp -s $(UNITS_ROOT)/rtl/fx_mul.v $(UNITS_FAULT_DIR)/fx_mul.v || { echo "test-units-fault: could not plant the fault"; exit 1; }
-	@$(UNITS_IVERILOG) -g2005 -Wall $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
+	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
 	    $(UNITS_ROOT)/tb/tb_fx_mul.v $(UNITS_FAULT_DIR)/fx_mul.v
 	@if ( $(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/sim.vvp +vectors=$< +n=$$(cat $<.n) +name=fx_mul_w8_f4_planted_fault,$(UNITS_FAULT_DIR)/run.log,fx_mul_w8_f4_planted_fault,1) ); \
 	then echo "test-units-fault: the planted fault was NOT detected"; exit 1; \

@@ -1,0 +1,60 @@
+/* timing.c - the cycle counts of the RTL (timing.h). Each function names the RTL it counts. */
+#include "hwgen.h"
+
+#include <stdio.h>
+
+long hw_toward_latency(const hw_params *hp)
+{
+    /* toward.v: DIM squares, the root (SQRT_BITS + 2), the divide (DIV_BITS + 2), DIM products, done */
+    return hp->sqrt_bits + hp->div_bits + 2L * hp->dim + 5;
+}
+
+long hw_spring_latency(const hw_params *hp)
+{
+    /* spring_force.v: DIM squares, the root, DIM divides, DIM + 2 products for vn and f, DIM for F */
+    return hp->sqrt_bits + (long)hp->dim * hp->div_bits + 5L * hp->dim + 5;
+}
+
+static long node_count(const hw_params *hp) { return (long)hp->m * hp->k; }
+
+long hw_constraint_pass(const hw_params *hp)
+{
+    long n = node_count(hp), rods = hp->graph ? hp->e_rods : n - 1;
+    if (hp->rule == 0) /* chain_sequencer: load C and D, then per node two targets and the slide */
+        return 2 + n * (2 * hw_toward_latency(hp) + 2);
+    return rods * (hw_toward_latency(hp) + 5); /* pair_sequencer: read a, b, excess, write a, b */
+}
+
+long hw_spring_pass(const hw_params *hp)
+{
+    long springs = hp->graph ? hp->e_springs : node_count(hp) - 1;
+    return 1 + springs * (hw_spring_latency(hp) + 5); /* pair_sequencer SPRING: as pairwise, per link */
+}
+
+/* The terms of a substep and of a frame. */
+static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 2 : 1); }
+static long constrain_phase(const hw_params *hp) { return hp->en_constraints ? hp->iter * hw_constraint_pass(hp) : 0; }
+static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
+static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 1 : 0; }
+static long grab_phase(const hw_params *hp) { return hp->grab && hp->en_mouse ? node_count(hp) + 1 : 0; }
+
+long hw_cycles_per_frame(const hw_params *hp)
+{
+    long substep = verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp);
+    return hp->substeps * substep + 1 + grab_phase(hp);
+}
+
+int hw_timing_text(const hw_params *hp, char *out, int len)
+{
+    return snprintf(out, (size_t)len,
+                    "toward latency LT = SQRT_BITS + DIV_BITS + 2 DIM + 5 = %ld\n"
+                    "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 5 = %ld\n"
+                    "constraint pass = %s = %ld\n"
+                    "spring pass = 1 + links (LS + 5) = %ld\n"
+                    "substep = Verlet (K + 2 with constraints, else K + 1) + ITER passes [+ spring pass] [+ ground K + 1] = %ld\n"
+                    "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
+                    hw_toward_latency(hp), hw_spring_latency(hp),
+                    hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)", hw_constraint_pass(hp),
+                    hw_spring_pass(hp), verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
+                    hw_cycles_per_frame(hp));
+}

@@ -1,0 +1,31 @@
+/*
+ * timing.h - how many cycles the RTL takes: every latency and phase length, written
+ * once. The cycle model, the harness, the CLI (strand hwgen, strand info), the docs
+ * and the scripts all get them from here.
+ */
+#ifndef STRAND_TIMING_H
+#define STRAND_TIMING_H
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* toward.v: start to done (the distance datapath of the constraints). */
+long hw_toward_latency(const hw_params *hp);
+/* spring_force.v: start to done. */
+long hw_spring_latency(const hw_params *hp);
+/* One constraint pass (chain_sequencer or pair_sequencer), start to done, without the start cycle. */
+long hw_constraint_pass(const hw_params *hp);
+/* One spring pass, from its start cycle to its done. */
+long hw_spring_pass(const hw_params *hp);
+/* Cycles per frame: step to frame_done, back to back (docs/architecture.md shows the terms). */
+long hw_cycles_per_frame(const hw_params *hp);
+
+/* The formula as text, one term per line ("name = value: how"), for docs and `strand info`. */
+int hw_timing_text(const hw_params *hp, char *out, int len);
+
+#ifdef __cplusplus
+}
+#endif
+
+#endif

@@ -1,0 +1,154 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_defs.vh"
+
+/*
+ * frame_ctrl - the frame FSM of strand_core: phases, substeps, the mouse sample,
+ * the init walk and the frame-done interrupt.
+ *
+ * A frame (on `step`, when idle): the mouse is sampled; with GRAB the scan for the
+ * node to hold runs first (phase GRAB); then SUBSTEPS times: with EN_SPRINGS a spring
+ * pass (FORCE); the Verlet pass of every unit (VERLET, ends when FV rises); with
+ * EN_CONSTRAINTS ITER constraint passes (CONSTRAIN, ends on the sequencer's done);
+ * with EN_GROUND a ground pass (GROUND, ends when FV rises). Each phase starts in
+ * the cycle the one before ends. frame_done pulses for one cycle at the end and
+ * sets irq, which a write of IRQ_ACK clears (a frame ending in the same cycle wins).
+ *
+ * CMD = 1 (when idle) starts the init walk (phase INIT, N cycles): node i, in
+ * {unit, node} order, is laid at START + i STEP with its previous position PREV away
+ * (init_pos, init_prev; node_unit puts a pinned node at rest).
+ *
+ * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND, 6 GRAB. Every
+ * phase takes a number of cycles fixed by the parameters (model/timing.c).
+ */
+module frame_ctrl #(
+`include "strand_params.vh"
+) (
+    input  wire             clk,
+    input  wire             reset,
+    input  wire             step,          // start a frame (when idle)
+    input  wire             cmd_init,      // start the init walk (when idle)
+    input  wire             irq_ack,       // clear irq
+    input  wire [DIM*W-1:0] mouse,         // the pointer and the button, sampled at a frame's start
+    input  wire             mouse_down,
+    input  wire [DIM*W-1:0] start_pos,     // START, STEP, PREV: the init walk's layout
+    input  wire [DIM*W-1:0] step_pos,
+    input  wire [DIM*W-1:0] prev_off,
+
+    input  wire             fv,            // every unit finished its pass
+    input  wire             seq_done,      // the constraint passes are over
+    input  wire             force_done,    // the spring pass is over
+    input  wire             scan_end,      // the grab scan is over
+
+    output reg  [2:0]       phase,
+    output wire             frame_start,   // this cycle starts a frame
+    output wire             verlet_start,  // one-cycle starts of the passes
+    output wire             ground_start,
+    output wire             seq_start,
+    output wire             force_start,
+    output reg              frame_done,    // one-cycle pulse
+    output reg              irq,           // level: a frame ended since the last IRQ_ACK
+    output reg  [DIM*W-1:0] mouse_q,
+    output reg              mouse_down_q,
+
+    output wire             init_we,       // the init walk writes node init_addr now
+    output reg  [AW-1:0]    init_addr,
+    output reg  [DIM*W-1:0] init_pos,
+    output wire [DIM*W-1:0] init_prev
+);
+
+`include "strand_addr.vh"
+
+    localparam [2:0] PH_IDLE = 3'd0, PH_INIT = 3'd1, PH_VERLET = 3'd2, PH_CONSTRAIN = 3'd3, PH_FORCE = 3'd4,
+                     PH_GROUND = 3'd5, PH_GRAB = 3'd6;
+    localparam [0:0] HAS_GRAB = EN_MOUSE && GRAB;
+    localparam integer N_LAST_I   = M * K - 1;
+    localparam integer SUB_LAST_I = SUBSTEPS - 1;
+    localparam [CW-1:0] N_LAST    = N_LAST_I[CW-1:0];
+    localparam [SW-1:0] SUB_LAST  = SUB_LAST_I[SW-1:0];
+
+    reg [SW-1:0] substep_q;
+    reg [CW-1:0] init_count;
+
+    // A substep: [FORCE] VERLET [CONSTRAIN] [GROUND]; each phase starts in the cycle the one before ends.
+    wire verlet_end    = phase == PH_VERLET && fv;
+    wire body_end      = EN_CONSTRAINTS ? phase == PH_CONSTRAIN && seq_done : verlet_end;
+    wire substep_end   = EN_GROUND ? phase == PH_GROUND && fv : body_end;
+    wire substep_start = (HAS_GRAB ? scan_end : frame_start) || (substep_end && substep_q != SUB_LAST);
+    assign frame_start  = phase == PH_IDLE && !cmd_init && step;
+    assign ground_start = body_end && EN_GROUND;
+    assign force_start  = substep_start && EN_SPRINGS;
+    assign verlet_start = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
+    assign seq_start    = verlet_end && EN_CONSTRAINTS;
+    assign init_we      = phase == PH_INIT;
+
+    // ---- the init walk's lanes: the next node's position, and the previous position ----
+    wire [DIM*W-1:0] init_next;
+    genvar k;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_lane
+            /* verilator lint_off PINCONNECTEMPTY */
+            // saturation flags are not needed: the saturated value is the result
+            fx_add #(.W(W)) u_next (.sub(1'b0), .a(init_pos[k*W +: W]), .b(step_pos[k*W +: W]), .y(init_next[k*W +: W]), .sat());
+            fx_add #(.W(W)) u_prev (.sub(1'b0), .a(init_pos[k*W +: W]), .b(prev_off[k*W +: W]), .y(init_prev[k*W +: W]), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+        end
+    endgenerate
+
+    always @(posedge clk) begin
+        frame_done <= 1'b0;
+        if (reset) begin
+            phase        <= PH_IDLE;
+            substep_q    <= {SW{1'b0}};
+            mouse_q      <= {(DIM*W){1'b0}};
+            mouse_down_q <= 1'b0;
+            init_addr    <= {AW{1'b0}};
+            init_count   <= {CW{1'b0}};
+            init_pos     <= {(DIM*W){1'b0}};
+            frame_done   <= 1'b0;
+            irq          <= 1'b0;
+        end else begin
+            case (phase)
+                PH_IDLE: begin
+                    if (cmd_init) begin
+                        phase      <= PH_INIT;
+                        init_addr  <= {AW{1'b0}};
+                        init_count <= {CW{1'b0}};
+                        init_pos   <= start_pos;
+                    end else if (step) begin
+                        phase        <= HAS_GRAB ? PH_GRAB : EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                        substep_q    <= {SW{1'b0}};
+                        mouse_q      <= mouse;
+                        mouse_down_q <= mouse_down;
+                    end
+                end
+                PH_INIT: begin
+                    init_pos   <= init_next;
+                    init_count <= init_count + 1'b1;
+                    init_addr  <= next_node(init_addr);
+                    if (init_count == N_LAST) phase <= PH_IDLE;
+                end
+                PH_FORCE:  if (force_done) phase <= PH_VERLET;
+                PH_GRAB:   if (scan_end) phase <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                PH_VERLET: if (seq_start) phase <= PH_CONSTRAIN;
+                default:   ;
+            endcase
+            if (ground_start) phase <= PH_GROUND;
+            if (substep_end) begin
+                if (substep_q == SUB_LAST) begin
+                    phase      <= PH_IDLE;
+                    frame_done <= 1'b1;
+                end else begin
+                    phase     <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                    substep_q <= substep_q + 1'b1;
+                end
+            end
+            if (irq_ack) irq <= 1'b0;
+            if (substep_end && substep_q == SUB_LAST) irq <= 1'b1;
+        end
+    end
+
+endmodule
+
+`resetall

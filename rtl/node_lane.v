@@ -1,0 +1,196 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_defs.vh"
+
+/*
+ * node_lane - one axis of a node unit: the axis's storage and its part of the
+ * per-node step (node_unit instantiates DIM of them: x, y, z).
+ *
+ * Storage (strand_ram, reset-free): pos (positions; port A for the pass and the
+ * sequencers, port B for the external read port), prev (previous positions) and,
+ * with EN_SPRINGS, acc (the spring force gathered this substep).
+ *
+ * The Verlet step of this axis, from port A's data q, qp, qa (model/engine_body.h
+ * verlet_node(), every operation a saturating fx_add / fx_mul in the model's order):
+ *     v = q - qp;  v = v - v*d (EN_DAMPING);  n = q + v;  n = n + g h^2 (EN_GRAVITY);
+ *     n = n + qa (EN_SPRINGS)
+ * The mouse (EN_MOUSE, not GRAB): `touch` says |mouse - n| < box on this axis; the
+ * impulse itself acts on x only (reference 000, mouse_node()): lane 0 makes
+ *     np = in_touch ? (mouse < q ? n + a : n - a) : q
+ * The ground pass (EN_GROUND, ground_node()): on the normal axis (AXIS = GROUND_AXIS)
+ * `hit` says the node is past the boundary b, and the node is put on it with its
+ * velocity reversed: g = b, gp = b + v; on every other axis friction pulls the previous
+ * position toward the position: g = q, gp = qp + v * friction.
+ *
+ * The write of this axis (node_unit decides whether and where): during a pass the
+ * pass's result (the grabbed node: the pointer, its old position as previous),
+ * else the external data (init walk, NODE loads, the sequencer), a pinned node's
+ * previous position = its position (it starts at rest).
+ *
+ * Timing: combinational from port A's registered data; storage reads are
+ * synchronous (address now, data next cycle), read before write.
+ */
+module node_lane #(
+`include "strand_params.vh"
+    ,
+    parameter integer AXIS = 0   // 0 x, 1 y, 2 z
+) (
+    input  wire          clk,
+
+    // port A, port B, the write port (node_unit's addresses and enables)
+    input  wire          a_re,
+    input  wire [IW-1:0] a_addr,
+    input  wire [IW-1:0] b_addr,
+    input  wire          we,         // write pos (and prev when wprev) at widx
+    input  wire          wprev,
+    input  wire [IW-1:0] widx,
+    input  wire          acc_clear,  // the Verlet pass consumes the force of node vidx, the init walk and loads clear it
+    input  wire [IW-1:0] acc_clear_idx,
+    input  wire          acc_we,     // the spring pass writes the force of node widx
+    input  wire [W-1:0]  acc_w,
+
+    // how the write is formed
+    input  wire          running,    // a pass is under way: write its result
+    input  wire          ground_q,   //   the ground pass
+    input  wire          grab_q,     //   the node is the grabbed one (GRAB)
+    input  wire          w_pin,      // an external write to a pinned node: at rest
+    input  wire [W-1:0]  w_pos,      // external write data
+    input  wire [W-1:0]  w_prev,
+
+    // the run-time constants and the pointer, of this axis
+    input  wire [W-1:0]  gdt2,       // g h^2
+    input  wire [W-1:0]  damping,    // d
+    input  wire [W-1:0]  impulse,    // a (lane 0)
+    input  wire [W-1:0]  box,        // in-touch half-width
+    input  wire [W-1:0]  box_neg,    // -box, exact in W+1 bits (the top bit)
+    input  wire          box_neg_top,
+    input  wire [W-1:0]  mouse,      // the pointer, sampled at the frame start
+    input  wire          in_touch,   // every axis touches and the button is down (lane 0's impulse)
+    input  wire [W-1:0]  ground,     // the ground boundary (on the normal axis)
+    input  wire [W-1:0]  friction,   // 1 - u
+
+    output wire [W-1:0]  q,          // port A: position, previous position, force
+    output wire [W-1:0]  qp,
+    output wire [W-1:0]  qa,
+    output wire [W-1:0]  b_data,     // port B: position (node_unit masks unwritten nodes)
+    output wire          touch,      // |mouse - n| < box on this axis
+    output wire          hit,        // AXIS = GROUND_AXIS: past the boundary
+    output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)
+);
+
+    // ---- storage ----
+    wire [W-1:0] n;     // the Verlet result
+    wire [W-1:0] np;    // the previous position after the mouse impulse
+    wire [W-1:0] g, gp; // the ground pass's result
+    wire [W-1:0] wprev_data;
+    assign wdata      = running ? (ground_q ? g : grab_q ? mouse : n) : w_pos;
+    assign wprev_data = running ? (ground_q ? gp : np) : w_pin ? w_pos : w_prev;
+
+    strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pos (
+        .clk(clk), .we(we), .waddr(widx), .wdata(wdata),
+        .re_a(a_re), .raddr_a(a_addr), .rdata_a(q),
+        .re_b(1'b1), .raddr_b(b_addr), .rdata_b(b_data));
+    /* verilator lint_off PINCONNECTEMPTY */
+    // the previous positions and the forces have one reader (port A)
+    strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_prev (
+        .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
+        .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
+        .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // ---- the Verlet step ----
+    wire [W-1:0] v, v_d, n1, n_g;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // saturation flags are not needed: the saturated value is the result
+    fx_add #(.W(W)) u_v (.sub(1'b1), .a(q), .b(qp), .y(v), .sat());
+    generate
+        if (EN_DAMPING) begin : g_damping
+            wire [W-1:0] dv;
+            fx_mul #(.W(W), .F(F)) u_dv (.a(v), .b(damping), .y(dv), .sat(), .prod());
+            fx_add #(.W(W)) u_vd (.sub(1'b1), .a(v), .b(dv), .y(v_d), .sat());
+        end else begin : g_no_damping
+            assign v_d = v;
+            wire unused_damping = &{1'b0, damping};
+        end
+    endgenerate
+    fx_add #(.W(W)) u_n1 (.sub(1'b0), .a(q), .b(v_d), .y(n1), .sat());
+    generate
+        if (EN_GRAVITY) begin : g_gravity
+            fx_add #(.W(W)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
+        end else begin : g_no_gravity
+            assign n_g = n1;
+            wire unused_gravity = &{1'b0, gdt2};
+        end
+    endgenerate
+
+    // ---- the spring force of this substep (a spring pass gathered it) ----
+    // The Verlet pass consumes each node's force and clears it (pinned nodes too), so the
+    // next spring pass starts from 0, as model/engine_body.h force_pass() does; the init
+    // walk and NODE loads clear it too (the memory is not reset).
+    generate
+        if (EN_SPRINGS) begin : g_springs
+            // one reader (port A)
+            strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_acc (
+                .clk(clk), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
+                .wdata(acc_clear ? {W{1'b0}} : acc_w),
+                .re_a(a_re), .raddr_a(a_addr), .rdata_a(qa),
+                .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
+            fx_add #(.W(W)) u_f (.sub(1'b0), .a(n_g), .b(qa), .y(n), .sat());
+        end else begin : g_no_springs
+            assign qa = {W{1'b0}};
+            assign n  = n_g;
+            wire unused_springs = &{1'b0, acc_clear, acc_clear_idx, acc_we, acc_w};
+        end
+    endgenerate
+
+    // ---- the mouse: this axis's in-touch test, and the impulse (x only) ----
+    generate
+        if (EN_MOUSE && !GRAB) begin : g_mouse
+            // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, both exact in W+1 bits
+            // (a saturated difference is never inside the box): no saturating subtract,
+            // no negation per node
+            wire [W:0] dd = {mouse[W-1], mouse} - {n[W-1], n};
+            assign touch = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
+            if (AXIS == 0) begin : g_impulse
+                // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left of x)
+                wire [W-1:0] pushed;
+                fx_add #(.W(W)) u_push (.sub(!($signed(mouse) < $signed(q))), .a(n), .b(impulse), .y(pushed), .sat());
+                assign np = in_touch ? pushed : q;
+            end else begin : g_no_impulse
+                assign np = q;
+                wire unused_impulse = &{1'b0, impulse, in_touch};
+            end
+        end else begin : g_no_mouse
+            assign touch = 1'b1;
+            assign np = q;
+            wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch};
+        end
+    endgenerate
+
+    // ---- the ground pass: collision with friction ----
+    generate
+        if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
+            assign hit = GROUND_ABOVE ? $signed(q) < $signed(ground) : $signed(ground) < $signed(q);
+            fx_add #(.W(W)) u_bounce (.sub(1'b0), .a(ground), .b(v), .y(gp), .sat());
+            assign g = ground;
+            wire unused_friction = &{1'b0, friction};
+        end else if (EN_GROUND) begin : g_tangent
+            wire [W-1:0] slip;
+            fx_mul #(.W(W), .F(F)) u_slip (.a(v), .b(friction), .y(slip), .sat(), .prod());
+            fx_add #(.W(W)) u_fp (.sub(1'b0), .a(qp), .b(slip), .y(gp), .sat());
+            assign g   = q;
+            assign hit = 1'b0;
+            wire unused_ground = &{1'b0, ground};
+        end else begin : g_no_ground
+            assign g   = q;
+            assign gp  = qp;
+            assign hit = 1'b0;
+            wire unused_ground = &{1'b0, ground, friction, ground_q};
+        end
+    endgenerate
+    /* verilator lint_on PINCONNECTEMPTY */
+
+endmodule
+
+`resetall

@@ -1,0 +1,16 @@
+// strand_defs.vh - the one style of parameter check, for every module of rtl/.
+//
+//     `STRAND_CHECK(label, condition, ("module: what is wrong (X=%0d) in %m", X))
+//
+// stops elaboration when the condition is false: the simulators print the message
+// and $fatal; Yosys 0.23 prints no $error text, so under SYNTHESIS the check is an
+// instance of a module that does not exist, named `label` (say what is wrong in
+// it, e.g. W_must_be_8_to_32), and `hierarchy -check` stops with that name.
+`ifndef STRAND_DEFS_VH
+`define STRAND_DEFS_VH
+`ifdef SYNTHESIS
+`define STRAND_CHECK(label, cond, msg) generate if (!(cond)) begin : label strand_bad_parameter label (); end endgenerate
+`else
+`define STRAND_CHECK(label, cond, msg) initial if (!(cond)) begin $display msg; $fatal(1); end
+`endif
+`endif

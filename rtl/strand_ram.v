@@ -1,0 +1,64 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_defs.vh"
+
+/*
+ * strand_ram - node and edge storage: a reset-free synchronous memory with one
+ * write port and two read ports.
+ *
+ * DEPTH words of WIDTH bits. A write (we) stores wdata at waddr at the clock edge;
+ * a read port with its enable high loads the word at its address into its output
+ * register at the same edge (data the cycle after the address), reading the old
+ * word when it is the one being written (read before write); with the enable low
+ * the output holds. Nothing is reset: the contents are undefined until written
+ * (the init walk, NODE and EDGE writes fill them), which is what lets FPGA flows
+ * map the memory to block RAM.
+ *
+ * Where it goes: a memory of DEPTH >= BLOCK_MIN words asks for block RAM
+ * (ram_style "block": SB_RAM40_4K on iCE40, DP16KD on ECP5, RAMB18 on 7-series);
+ * a smaller one for distributed RAM ("distributed": LUT RAM on ECP5 and Xilinx; the
+ * iCE40 has none and uses flip-flops). A second read port that is used (port B)
+ * makes Yosys store the memory twice, each copy with one read port. An address at
+ * or past DEPTH must not be written; a read there gives an undefined word.
+ *
+ * Latency: 1 cycle per read; throughput one write and two reads per cycle.
+ */
+module strand_ram #(
+    parameter integer WIDTH     = 32, // bits per word
+    parameter integer DEPTH     = 16, // words
+    parameter integer ABITS     = 4,  // address bits, 2^ABITS >= DEPTH
+    parameter integer BLOCK_MIN = 64  // DEPTH at or above which block RAM is asked for
+) (
+    input  wire             clk,
+    input  wire             we,
+    input  wire [ABITS-1:0] waddr,
+    input  wire [WIDTH-1:0] wdata,
+    input  wire             re_a,
+    input  wire [ABITS-1:0] raddr_a,
+    output reg  [WIDTH-1:0] rdata_a,
+    input  wire             re_b,
+    input  wire [ABITS-1:0] raddr_b,
+    output reg  [WIDTH-1:0] rdata_b
+);
+
+    `STRAND_CHECK(strand_ram_ABITS_too_narrow, (1 << ABITS) >= DEPTH && DEPTH >= 1,
+                  ("strand_ram: ABITS=%0d cannot address DEPTH=%0d words in %m", ABITS, DEPTH))
+
+    generate
+        if (DEPTH >= BLOCK_MIN) begin : g_block
+            (* ram_style = "block" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
+            always @(posedge clk) if (we) mem[waddr] <= wdata;
+            always @(posedge clk) if (re_a) rdata_a <= mem[raddr_a];
+            always @(posedge clk) if (re_b) rdata_b <= mem[raddr_b];
+        end else begin : g_small
+            (* ram_style = "distributed" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
+            always @(posedge clk) if (we) mem[waddr] <= wdata;
+            always @(posedge clk) if (re_a) rdata_a <= mem[raddr_a];
+            always @(posedge clk) if (re_b) rdata_b <= mem[raddr_b];
+        end
+    endgenerate
+
+endmodule
+
+`resetall
