@@ -34,7 +34,7 @@ RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model run sim wave docs-sim bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep lockstep-fuzz \
+.PHONY: help bootstrap model run sim wave docs-sim bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -200,7 +200,13 @@ lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 
 # ---- everything ----
 
-TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep \
+# ---- the AXI4-Lite shell, with cocotb and cocotbext-axi (in .venv) against the C model ----
+
+AXIL_SCENES := sim/scenes/ref000_rope.scene:3 tb/scenes/graph3d_q12.scene:3
+test-axil: $(STRAND) $(GEN_HDRS)
+	@rc=0; for s in $(AXIL_SCENES); do $(PYTHON) tb/cocotb/run_axil.py $${s%%:*} --frames $${s##*:} || rc=1; done; exit $$rc
+
+TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap

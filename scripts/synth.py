@@ -36,14 +36,29 @@ import time
 
 # ---- what is built ----
 
-TOP = "strand_top"
+TOP = "strand_core"
 
-# The parameters every build shares: Q16.16 with a full-precision root and divider.
-COMMON = [
-    ("W", 32), ("F", 16), ("SQRT_BITS", 31), ("DIV_BITS", 31), ("ITER", 1), ("SUBSTEPS", 1),
-    ("EN_GRAVITY", 1), ("EN_MOUSE", 1), ("EN_CONSTRAINTS", 1), ("EN_DAMPING", 0),
-    ("RULE", 0),  # the centred rule of reference 000
-]
+ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+
+
+def param_table(gen):
+    """The table of strand_core's parameters (scripts/gen_params.py writes it into gen/)."""
+    with open(os.path.join(gen, "strand_params.json")) as f:
+        return json.load(f)
+
+
+def table_defaults(gen):
+    """The defaults of the table, as integers (a default may name an earlier parameter)."""
+    out = {}
+    for p in param_table(gen)["params"]:
+        out[p["name"]] = int(eval(p["default"], {}, dict(out)))  # the table's own integer expressions
+    return out
+
+
+# Every build is the table's defaults (Q16.16, a full-precision root and divider, the
+# centred rule of reference 000, gravity and the mouse) with these changes; DEBUG = 0:
+# the core as it is synthesised, without its observation port.
+COMMON = [("DEBUG", 0)]
 
 # name: (M units, K nodes per unit)
 CONFIGS = [("4x5", 4, 5), ("8x8", 8, 8), ("16x16", 16, 16)]
@@ -105,14 +120,21 @@ def params(config):
     return [("M", m), ("K", k)] + COMMON
 
 
-def ys_text(config, flow, gen, srcs):
-    """The Yosys script of one flow of one build (paths absolute: Yosys runs in the build dir)."""
-    lines = [f"# {flow} flow of strand_top, build {config}; written by scripts/synth.py"]
-    lines.append("read_verilog -I" + os.path.abspath(gen) + " " + " ".join(os.path.abspath(s) for s in srcs))
-    lines.append("chparam " + " ".join(f"-set {n} {v}" for n, v in params(config)) + f" {TOP}")
+def yosys_script(flow, params, gen, srcs, title):
+    """The Yosys script of one flow on strand_core with these parameters (name, value pairs).
+    Every report (resources.md, effects.md, accuracy.md) uses this one function."""
+    lines = [f"# {flow} flow of {TOP}, {title}; written by scripts/synth.py"]
+    lines.append("read_verilog -I" + os.path.abspath(gen) + " -I" + os.path.join(ROOT, "rtl") + " "
+                 + " ".join(os.path.abspath(s) for s in srcs))
+    lines.append("chparam " + " ".join(f"-set {n} {v}" for n, v in params) + f" {TOP}")
     lines.append(f"hierarchy -check -top {TOP}")
     lines += SYNTH_CMDS[flow]
     return "\n".join(lines) + "\n"
+
+
+def ys_text(config, flow, gen, srcs):
+    """The Yosys script of one flow of one build (paths absolute: Yosys runs in the build dir)."""
+    return yosys_script(flow, params(config), gen, srcs, f"build {config}")
 
 
 def pnr_cmd():
@@ -158,6 +180,12 @@ def file_digest(paths):
         with open(p, "rb") as f:
             h.update(f.read())
     return h.hexdigest()
+
+
+def gen_files(gen):
+    """The generated headers the RTL includes (part of every cache key), and rtl/'s own."""
+    import glob
+    return sorted(glob.glob(os.path.join(gen, "*.vh"))) + sorted(glob.glob(os.path.join(ROOT, "rtl", "*.vh")))
 
 
 def stamp_fresh(stamp, key):
@@ -223,7 +251,7 @@ def run_flow(config, flow, build, gen, srcs, quiet=False):
         raise Failure("yosys not found (make bootstrap installs it)")
     # The key covers the commands, the tool and the sources' contents, read before the
     # run: a source edited while Yosys runs makes the next run see a different key.
-    key = digest(ys, ver, file_digest(list(srcs) + [os.path.join(gen, "strand_regs.vh")]))
+    key = digest(ys, ver, file_digest(list(srcs) + gen_files(gen)))
     stamp = os.path.join(d, f"{flow}.ok")
     if stamp_fresh(stamp, key):
         return "cached"

@@ -14,9 +14,11 @@
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
 //                [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
-//                [--quiet] [+verilator+rand+reset+2 +verilator+seed+N]
+//                [--quiet] [--as-built] [+verilator+rand+reset+2 +verilator+seed+N]
 //
-// --png-dir DIR draws every frame the RTL computed (make movie).
+// --png-dir DIR draws every frame the RTL computed (make movie). --as-built runs the
+// model with the build's parameters where the scene would derive others (the effects
+// gating check: an effect switched off in the build, its registers still written).
 // --mode rtl runs the RTL alone and --mode model the cycle model alone, on the same
 // stimulus (for make bench). --resets N asserts reset at N random cycles in the
 // middle of frames; the run then writes the setup again and starts the scene over,
@@ -53,6 +55,7 @@ namespace {
 struct Options {
     std::string scene, trace, csv, png, expect, png_dir;
     std::string mode = "lockstep"; // lockstep | rtl (the RTL alone) | model (the cycle model alone)
+    bool as_built = false;         // the model follows the compiled build, not the scene's
     int resets = 0;                // resets at random cycles during the frames
     int frames = -1;
     uint64_t seed = 1;
@@ -106,9 +109,8 @@ struct Result {
 
 class Run {
   public:
-    Run(const Options &o, const scene &sc, int argc, char **argv, bool trace, long stop_at)
-        : o_(o), sc_(sc), stop_at_(stop_at) {
-        hw_params_of(&sc, &hp_);
+    Run(const Options &o, const scene &sc, const hw_params &hp, int argc, char **argv, bool trace, long stop_at)
+        : o_(o), sc_(sc), hp_(hp), stop_at_(stop_at) {
         ctx_ = std::make_unique<VerilatedContext>();
         ctx_->commandArgs(argc, argv); // +verilator+rand+reset+2 +verilator+seed+N
         top_ = std::make_unique<Vsim_top>(ctx_.get());
@@ -394,7 +396,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--quiet]\n"
+                         "               [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
 }
@@ -420,6 +422,7 @@ int main(int argc, char **argv) {
         else if (a == "--mode") o.mode = value("--mode");
         else if (a == "--png-dir") o.png_dir = value("--png-dir");
         else if (a == "--resets") o.resets = std::atoi(value("--resets"));
+        else if (a == "--as-built") o.as_built = true;
         else if (a == "--help") return usage(nullptr), 0;
         else if (a[0] == '+') continue; // Verilator's plusargs
         else if (a[0] == '-') return usage(("unknown option " + a).c_str());
@@ -440,16 +443,21 @@ int main(int argc, char **argv) {
         std::fprintf(stderr, "%s\n", err);
         return 2;
     }
-    hw_params hp;
+    hw_params hp, built;
     hw_params_of(&sc, &hp);
     // every parameter of the build params.h describes (the table of scripts/gen_params.py)
-#define STRAND_BUILT(NAME, name, ...) STRAND_##NAME,
-#define STRAND_WANTED(NAME, name, ...) hp.name,
-    const int built[] = {STRAND_PARAMS(STRAND_BUILT)};
-    const int wanted[] = {STRAND_PARAMS(STRAND_WANTED)};
+#define STRAND_BUILT(NAME, name, ...) built.name = STRAND_##NAME;
+    STRAND_PARAMS(STRAND_BUILT)
 #undef STRAND_BUILT
-#undef STRAND_WANTED
-    if (std::memcmp(built, wanted, sizeof built) != 0) {
+    STRAND_PARAMS_DERIVE(&built);
+    bool same = true;
+#define STRAND_SAME(NAME, name, ...) same = same && built.name == hp.name;
+    STRAND_PARAMS(STRAND_SAME)
+#undef STRAND_SAME
+    // --as-built: the model takes the build's parameters (an effect the build leaves out
+    // is left out of the model too, though the scene names it and its registers are written)
+    if (o.as_built) hp = built;
+    else if (!same) {
         std::fprintf(stderr, "%s:1: this harness was built for another scene's parameters; build it for this one (make sim SCENE=%s)\n",
                      sc.path, sc.path);
         return 2;
@@ -459,7 +467,7 @@ int main(int argc, char **argv) {
     auto t0 = std::chrono::steady_clock::now();
     Result r;
     {
-        Run run(o, sc, argc, argv, !o.trace.empty(), -1);
+        Run run(o, sc, hp, argc, argv, !o.trace.empty(), -1);
         r = run.go(frames);
     }
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
@@ -470,7 +478,7 @@ int main(int argc, char **argv) {
             Options ot = o;
             ot.trace = fst;
             ot.quiet = true;
-            Run replay(ot, sc, argc, argv, true, r.mismatch_cycle + 2);
+            Run replay(ot, sc, hp, argc, argv, true, r.mismatch_cycle + 2);
             replay.go(frames);
         }
         if (!o.expect.empty()) {
