@@ -1,5 +1,5 @@
 /*
- * cycle.c - strand_top, edge by edge. Each block below names the RTL register or
+ * cycle.c - strand_core, edge by edge. Each block below names the RTL register or
  * always block it mirrors. Everything in one edge is computed from the state
  * before the edge (as nonblocking assignments do), in this order: port B samples
  * the storage (read before write), the storage writes of this edge happen (the
@@ -28,7 +28,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     memset(c, 0, sizeof *c);
     if (hp->m > CYC_MAX_UNITS) return false;
     c->hp = *hp;
-    c->hp.grab = hp->grab && hp->en_mouse; /* strand_top: HAS_GRAB = EN_MOUSE && GRAB */
+    c->hp.grab = hp->grab && hp->en_mouse; /* frame_ctrl: HAS_GRAB = EN_MOUSE && GRAB */
     /* A chain with the build's effects; every value 0, as after reset. */
     scene *sc = &c->sc;
     snprintf(sc->name, sizeof sc->name, "rtl");
@@ -108,7 +108,7 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
     const int fec_at = c->hp.graph ? c->hp.e_rods : m * c->hp.k - (c->hp.rule ? 1 : 0);
     o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == fec_at;
-    /* strand_top shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
+    /* strand_core shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
     if (c->phase == PH_FORCE) {
         o->uidx = (uint32_t)c->force.uidx;
         o->nidx = (uint32_t)c->force.nidx;
@@ -195,7 +195,7 @@ static void lane_write(cyc_model *c, bool *written, int u, int idx, int node)
     c->wb_z[u] = c->s.pos[node][2];
 }
 
-/* A node index from a {unit, node} address (the address decoders of strand_top), or -1. */
+/* A node index from a {unit, node} address (the address decoders of strand_core), or -1. */
 static int node_of(const cyc_model *c, uint32_t addr)
 {
     const hw_params *hp = &c->hp;
@@ -204,7 +204,7 @@ static int node_of(const cyc_model *c, uint32_t addr)
     return (int)(u * (uint32_t)hp->k + nn);
 }
 
-/* strand_top's EDGE register: append {spring, b, a} to the spring or the rod memory. */
+/* strand_core's EDGE register: append {spring, b, a} to the spring or the rod memory. */
 static void edge_write(cyc_model *c, uint32_t data)
 {
     const hw_params *hp = &c->hp;
@@ -318,14 +318,15 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     uint32_t rd_u = in->rd_addr >> hp->iw & ((1u << hp->uw) - 1), rd_n = in->rd_addr & ((1u << hp->iw) - 1);
 
     c->cycle++;
-    c->rd_u_q = rd_u; /* strand_top rd_u_q: not reset, follows rd_addr */
+    c->rd_u_q = rd_u; /* strand_core rd_u_q: not reset, follows rd_addr */
     if (in->reset) {
         reset_all(c);
         return;
     }
 
     /* Combinational signals of this cycle, from the state before the edge. */
-    const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1);
+    /* frame_ctrl: CMD starts the init walk of a chain (a graph has none) */
+    const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph;
     const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
     const bool verlet_end = c->phase == PH_VERLET && c->done;
     const bool seq_done = hp->rule ? c->pair.done : c->sq_done;
@@ -348,7 +349,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->b_z[u] = ok ? c->s.pos[u * k + (int)rd_n][2] : 0;
     }
 
-    /* Storage writes. The init walk (strand_top PH_INIT): node (init_u, init_n) at rest. */
+    /* Storage writes. The init walk (frame_ctrl PH_INIT): node (init_u, init_n) at rest. */
     if (c->phase == PH_INIT) {
         int node = c->init_u * k + c->init_n;
         for (int a = 0; a < hp->dim; a++) {
@@ -358,8 +359,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         }
         lane_write(c, written, c->init_u, c->init_n, node);
     }
-    /* A NODE write (strand_top, idle only): the node takes LOAD; a pinned one at rest. */
-    if (in->cfg_we && in->cfg_addr == STRAND_REG_NODE && c->phase == PH_IDLE) {
+    /* A NODE write (strand_core: a graph's, idle only): the node takes LOAD; a pinned one at rest. */
+    if (in->cfg_we && in->cfg_addr == STRAND_REG_NODE && c->phase == PH_IDLE && hp->graph) {
         int node = node_of(c, in->cfg_data);
         if (node >= 0) {
             for (int a = 0; a < hp->dim; a++) {
@@ -499,7 +500,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     case PH_FORCE:
         if (force_done) c->phase = PH_VERLET;
         break;
-    case PH_GRAB: /* strand_top g_grab: the scan ends by grabbing or releasing (grab_update) */
+    case PH_GRAB: /* grab_scan: the scan ends by grabbing or releasing (grab_update) */
         if (scan_end) {
             for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;

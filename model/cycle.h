@@ -1,9 +1,9 @@
 /*
- * cycle.h - the cycle model: strand_top, register for register, clock by clock.
+ * cycle.h - the cycle model: strand_core, register for register, clock by clock.
  *
  * It holds the RTL's control state (phases, counters, the sequencer's states and
  * the datapath's fixed latency) and its visible registers (read port, write-back
- * lanes, status), and predicts every output of strand_top on every cycle. Node
+ * lanes, status), and predicts every output of strand_core on every cycle. Node
  * positions live in a sim_fx, and are changed by the frame engine's own per-node
  * functions (verlet_node, mouse_node, centred_node) at the edge where the RTL
  * writes that node, so the cycle model and the frame engine cannot drift apart.
@@ -29,7 +29,7 @@ enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4, 
 enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
 enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };                 /* pair_sequencer */
 
-/* The inputs of strand_top during one cycle (all W-bit words raw). */
+/* The inputs of strand_core during one cycle (all W-bit words raw). */
 typedef struct {
     bool reset;
     uint32_t mouse_x, mouse_y, mouse_z;
@@ -40,7 +40,7 @@ typedef struct {
     uint32_t rd_addr;
 } cyc_inputs;
 
-/* The outputs of strand_top during one cycle. */
+/* The outputs of strand_core during one cycle. */
 typedef struct {
     bool frame_done, busy, irq;
     uint32_t rd_x, rd_y, rd_z;
@@ -71,7 +71,7 @@ typedef struct {
     int spring0; /* the first spring edge of sc (springs follow the rods) */
     int fill[2]; /* graph: edges loaded into the rod and the spring memory */
 
-    /* strand_top */
+    /* strand_core */
     int phase, substep;
     int scan_i;  /* the grab scan: nodes addressed so far */
     bool frame_done;
@@ -99,10 +99,10 @@ typedef struct {
     cyc_pair_seq force;  /* pair_sequencer, the spring pass (EN_SPRINGS) */
 } cyc_model;
 
-/* The model of a build (all nodes at 0, nothing pinned, registers 0: strand_top after reset). */
+/* The model of a build (all nodes at 0, nothing pinned, registers 0: strand_core after reset). */
 bool cyc_init(cyc_model *c, const hw_params *hp);
 void cyc_free(cyc_model *c);
-/* What strand_top shows in the current cycle. */
+/* What strand_core shows in the current cycle. */
 void cyc_get_outputs(const cyc_model *c, cyc_outputs *out);
 /* One rising edge with these inputs. */
 void cyc_edge(cyc_model *c, const cyc_inputs *in);

@@ -17,7 +17,8 @@
  *
  * CMD = 1 (when idle) starts the init walk (phase INIT, N cycles): node i, in
  * {unit, node} order, is laid at START + i STEP with its previous position PREV away
- * (init_pos, init_prev; node_unit puts a pinned node at rest).
+ * (init_pos, init_prev; node_unit puts a pinned node at rest). A graph has no walk
+ * (its nodes are loaded one by one): there CMD does nothing and none of it is built.
  *
  * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND, 6 GRAB. Every
  * phase takes a number of cycles fixed by the parameters (model/timing.c).
@@ -53,8 +54,8 @@ module frame_ctrl #(
     output reg              mouse_down_q,
 
     output wire             init_we,       // the init walk writes node init_addr now
-    output reg  [AW-1:0]    init_addr,
-    output reg  [DIM*W-1:0] init_pos,
+    output wire [AW-1:0]    init_addr,
+    output wire [DIM*W-1:0] init_pos,
     output wire [DIM*W-1:0] init_prev
 );
 
@@ -69,30 +70,60 @@ module frame_ctrl #(
     localparam [SW-1:0] SUB_LAST  = SUB_LAST_I[SW-1:0];
 
     reg [SW-1:0] substep_q;
-    reg [CW-1:0] init_count;
+    wire         walk = cmd_init && !GRAPH;  // the init walk starts
+    wire         walk_end;                   // its last node is written now
 
     // A substep: [FORCE] VERLET [CONSTRAIN] [GROUND]; each phase starts in the cycle the one before ends.
     wire verlet_end    = phase == PH_VERLET && fv;
     wire body_end      = EN_CONSTRAINTS ? phase == PH_CONSTRAIN && seq_done : verlet_end;
     wire substep_end   = EN_GROUND ? phase == PH_GROUND && fv : body_end;
     wire substep_start = (HAS_GRAB ? scan_end : frame_start) || (substep_end && substep_q != SUB_LAST);
-    assign frame_start  = phase == PH_IDLE && !cmd_init && step;
+    assign frame_start  = phase == PH_IDLE && !walk && step;
     assign ground_start = body_end && EN_GROUND;
     assign force_start  = substep_start && EN_SPRINGS;
     assign verlet_start = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
     assign seq_start    = verlet_end && EN_CONSTRAINTS;
     assign init_we      = phase == PH_INIT;
 
-    // ---- the init walk's lanes: the next node's position, and the previous position ----
-    wire [DIM*W-1:0] init_next;
+    // ---- the init walk (chains): the node, its position and previous position ----
     genvar k;
     generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_lane
-            /* verilator lint_off PINCONNECTEMPTY */
-            // saturation flags are not needed: the saturated value is the result
-            fx_add #(.W(W)) u_next (.sub(1'b0), .a(init_pos[k*W +: W]), .b(step_pos[k*W +: W]), .y(init_next[k*W +: W]), .sat());
-            fx_add #(.W(W)) u_prev (.sub(1'b0), .a(init_pos[k*W +: W]), .b(prev_off[k*W +: W]), .y(init_prev[k*W +: W]), .sat());
-            /* verilator lint_on PINCONNECTEMPTY */
+        if (!GRAPH) begin : g_walk
+            reg [AW-1:0]    addr_q;
+            reg [CW-1:0]    count_q;
+            reg [DIM*W-1:0] pos_q;
+            wire [DIM*W-1:0] pos_next;
+            for (k = 0; k < DIM; k = k + 1) begin : g_lane
+                /* verilator lint_off PINCONNECTEMPTY */
+                // saturation flags are not needed: the saturated value is the result
+                fx_add #(.W(W), .SUB(0)) u_next (.sub(1'b0), .a(pos_q[k*W +: W]), .b(step_pos[k*W +: W]), .y(pos_next[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_q[k*W +: W]), .b(prev_off[k*W +: W]), .y(init_prev[k*W +: W]), .sat());
+                /* verilator lint_on PINCONNECTEMPTY */
+            end
+            always @(posedge clk) begin
+                if (reset) begin
+                    addr_q  <= {AW{1'b0}};
+                    count_q <= {CW{1'b0}};
+                    pos_q   <= {(DIM*W){1'b0}};
+                end else if (phase == PH_IDLE && walk) begin
+                    addr_q  <= {AW{1'b0}};
+                    count_q <= {CW{1'b0}};
+                    pos_q   <= start_pos;
+                end else if (phase == PH_INIT) begin
+                    addr_q  <= next_node(addr_q);
+                    count_q <= count_q + 1'b1;
+                    pos_q   <= pos_next;
+                end
+            end
+            assign walk_end  = phase == PH_INIT && count_q == N_LAST;
+            assign init_addr = addr_q;
+            assign init_pos  = pos_q;
+        end else begin : g_no_walk
+            assign walk_end  = 1'b0;
+            assign init_addr = {AW{1'b0}};
+            assign init_pos  = {(DIM*W){1'b0}};
+            assign init_prev = {(DIM*W){1'b0}};
+            wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};
         end
     endgenerate
 
@@ -103,19 +134,13 @@ module frame_ctrl #(
             substep_q    <= {SW{1'b0}};
             mouse_q      <= {(DIM*W){1'b0}};
             mouse_down_q <= 1'b0;
-            init_addr    <= {AW{1'b0}};
-            init_count   <= {CW{1'b0}};
-            init_pos     <= {(DIM*W){1'b0}};
             frame_done   <= 1'b0;
             irq          <= 1'b0;
         end else begin
             case (phase)
                 PH_IDLE: begin
-                    if (cmd_init) begin
-                        phase      <= PH_INIT;
-                        init_addr  <= {AW{1'b0}};
-                        init_count <= {CW{1'b0}};
-                        init_pos   <= start_pos;
+                    if (walk) begin
+                        phase <= PH_INIT;
                     end else if (step) begin
                         phase        <= HAS_GRAB ? PH_GRAB : EN_SPRINGS ? PH_FORCE : PH_VERLET;
                         substep_q    <= {SW{1'b0}};
@@ -123,12 +148,7 @@ module frame_ctrl #(
                         mouse_down_q <= mouse_down;
                     end
                 end
-                PH_INIT: begin
-                    init_pos   <= init_next;
-                    init_count <= init_count + 1'b1;
-                    init_addr  <= next_node(init_addr);
-                    if (init_count == N_LAST) phase <= PH_IDLE;
-                end
+                PH_INIT:   if (walk_end) phase <= PH_IDLE;
                 PH_FORCE:  if (force_done) phase <= PH_VERLET;
                 PH_GRAB:   if (scan_end) phase <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
                 PH_VERLET: if (seq_start) phase <= PH_CONSTRAIN;

@@ -18,12 +18,15 @@
  *          2^(W-1)-1 (positive overflow) or -2^(W-1) (negative overflow).
  * Rounding: none (exact).
  * Overflow: saturates, never wraps; sat = 1 when clamping happened.
+ * SUB fixes the operation when it is known when the design is built, so that a
+ * synthesis that keeps the hierarchy builds no inverter nor carry in for it.
  * Latency: combinational, 0 cycles; throughput one result per cycle.
  */
 module fx_add #(
-    parameter integer W = 32 // total width in bits, 8..32
+    parameter integer W   = 32, // total width in bits, 8..32
+    parameter integer SUB = -1  // 0: always a + b, 1: always a - b (sub is then ignored), -1: sub chooses
 ) (
-    input  wire         sub, // 0: a + b, 1: a - b
+    input  wire         sub, // SUB = -1: 0 a + b, 1 a - b
     input  wire [W-1:0] a,   // signed, W bits
     input  wire [W-1:0] b,   // signed, W bits
     output reg  [W-1:0] y,   // signed, W bits, saturated
@@ -32,9 +35,20 @@ module fx_add #(
 
     `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_add: W must be 8..32 (W=%0d) in %m", W))
 
+    `STRAND_CHECK(SUB_must_be_0_1_or_minus_1, SUB == 0 || SUB == 1 || SUB == -1, ("fx_add: SUB must be 0, 1 or -1 (SUB=%0d) in %m", SUB))
+
+    wire       neg;  // subtract
+    generate
+        if (SUB == -1) begin : g_either
+            assign neg = sub;
+        end else begin : g_fixed
+            assign neg = SUB == 1;
+            wire unused_sub = &{1'b0, sub};  // the operation is fixed
+        end
+    endgenerate
     wire [W:0] a_ext = {a[W-1], a};
-    wire [W:0] b_ext = {b[W-1], b} ^ {(W+1){sub}};       // ~b when subtracting
-    wire [W:0] sum   = a_ext + b_ext + {{W{1'b0}}, sub}; // exact in W+1 bits
+    wire [W:0] b_ext = {b[W-1], b} ^ {(W+1){neg}};       // ~b when subtracting
+    wire [W:0] sum   = a_ext + b_ext + {{W{1'b0}}, neg}; // exact in W+1 bits
 
     always @* begin
         sat = sum[W] ^ sum[W-1];

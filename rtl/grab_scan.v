@@ -59,14 +59,14 @@ module grab_scan #(
             wire [W-1:0] dd, nd;
             /* verilator lint_off PINCONNECTEMPTY */
             // saturation flags are not needed: the saturated value is the result
-            fx_add #(.W(W)) u_dd (.sub(1'b1), .a(mouse[k*W +: W]), .b(rd_pos[k*W +: W]), .y(dd), .sat());
-            fx_add #(.W(W)) u_nd (.sub(1'b1), .a({W{1'b0}}), .b(dd), .y(nd), .sat());  // |min| is max
+            fx_add #(.W(W), .SUB(1)) u_dd (.sub(1'b1), .a(mouse[k*W +: W]), .b(rd_pos[k*W +: W]), .y(dd), .sat());
+            fx_add #(.W(W), .SUB(1)) u_nd (.sub(1'b1), .a({W{1'b0}}), .b(dd), .y(nd), .sat());  // |min| is max
             assign dist_ax[k*W +: W] = dd[W-1] ? nd : dd;
             assign in_box[k] = $signed(dist_ax[k*W +: W]) < $signed(box[k*W +: W]);
             if (k == 0) begin : g_first
                 assign l1_sum[W-1:0] = dist_ax[W-1:0];
             end else begin : g_sum
-                fx_add #(.W(W)) u_sum (.sub(1'b0), .a(l1_sum[(k-1)*W +: W]), .b(dist_ax[k*W +: W]), .y(l1_sum[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_sum (.sub(1'b0), .a(l1_sum[(k-1)*W +: W]), .b(dist_ax[k*W +: W]), .y(l1_sum[k*W +: W]), .sat());
             end
             /* verilator lint_on PINCONNECTEMPTY */
         end

@@ -93,7 +93,7 @@ module node_lane #(
         .re_b(1'b1), .raddr_b(b_addr), .rdata_b(b_data));
     /* verilator lint_off PINCONNECTEMPTY */
     // the previous positions and the forces have one reader (port A)
-    strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_prev (
+    strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0)) u_prev (
         .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
         .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
@@ -103,21 +103,21 @@ module node_lane #(
     wire [W-1:0] v, v_d, n1, n_g;
     /* verilator lint_off PINCONNECTEMPTY */
     // saturation flags are not needed: the saturated value is the result
-    fx_add #(.W(W)) u_v (.sub(1'b1), .a(q), .b(qp), .y(v), .sat());
+    fx_add #(.W(W), .SUB(1)) u_v (.sub(1'b1), .a(q), .b(qp), .y(v), .sat());
     generate
         if (EN_DAMPING) begin : g_damping
             wire [W-1:0] dv;
             fx_mul #(.W(W), .F(F)) u_dv (.a(v), .b(damping), .y(dv), .sat(), .prod());
-            fx_add #(.W(W)) u_vd (.sub(1'b1), .a(v), .b(dv), .y(v_d), .sat());
+            fx_add #(.W(W), .SUB(1)) u_vd (.sub(1'b1), .a(v), .b(dv), .y(v_d), .sat());
         end else begin : g_no_damping
             assign v_d = v;
             wire unused_damping = &{1'b0, damping};
         end
     endgenerate
-    fx_add #(.W(W)) u_n1 (.sub(1'b0), .a(q), .b(v_d), .y(n1), .sat());
+    fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q), .b(v_d), .y(n1), .sat());
     generate
         if (EN_GRAVITY) begin : g_gravity
-            fx_add #(.W(W)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
+            fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
         end else begin : g_no_gravity
             assign n_g = n1;
             wire unused_gravity = &{1'b0, gdt2};
@@ -131,12 +131,12 @@ module node_lane #(
     generate
         if (EN_SPRINGS) begin : g_springs
             // one reader (port A)
-            strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_acc (
+            strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0)) u_acc (
                 .clk(clk), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
                 .wdata(acc_clear ? {W{1'b0}} : acc_w),
                 .re_a(a_re), .raddr_a(a_addr), .rdata_a(qa),
                 .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
-            fx_add #(.W(W)) u_f (.sub(1'b0), .a(n_g), .b(qa), .y(n), .sat());
+            fx_add #(.W(W), .SUB(0)) u_f (.sub(1'b0), .a(n_g), .b(qa), .y(n), .sat());
         end else begin : g_no_springs
             assign qa = {W{1'b0}};
             assign n  = n_g;
@@ -172,13 +172,13 @@ module node_lane #(
     generate
         if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
             assign hit = GROUND_ABOVE ? $signed(q) < $signed(ground) : $signed(ground) < $signed(q);
-            fx_add #(.W(W)) u_bounce (.sub(1'b0), .a(ground), .b(v), .y(gp), .sat());
+            fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v), .y(gp), .sat());
             assign g = ground;
             wire unused_friction = &{1'b0, friction};
         end else if (EN_GROUND) begin : g_tangent
             wire [W-1:0] slip;
             fx_mul #(.W(W), .F(F)) u_slip (.a(v), .b(friction), .y(slip), .sat(), .prod());
-            fx_add #(.W(W)) u_fp (.sub(1'b0), .a(qp), .b(slip), .y(gp), .sat());
+            fx_add #(.W(W), .SUB(0)) u_fp (.sub(1'b0), .a(qp), .b(slip), .y(gp), .sat());
             assign g   = q;
             assign hit = 1'b0;
             wire unused_ground = &{1'b0, ground};

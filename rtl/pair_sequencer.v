@@ -140,7 +140,7 @@ module pair_sequencer #(
             end
             /* verilator lint_off PINCONNECTEMPTY */
             // one reader
-            strand_ram #(.WIDTH(2 * AW + W), .DEPTH(E), .ABITS(EW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_edges (
+            strand_ram #(.WIDTH(2 * AW + W), .DEPTH(E), .ABITS(EW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0)) u_edges (
                 .clk(clk), .we(e_we && fill < E[EW:0]), .waddr(fill[EW-1:0]), .wdata({e_rest, e_b, e_a}),
                 .re_a(state_q == S_RD_A || rd_next), .raddr_a(raddr), .rdata_a(entry),
                 .re_b(1'b0), .raddr_b({EW{1'b0}}), .rdata_b());
@@ -178,8 +178,8 @@ module pair_sequencer #(
                 .rest_len(link_rest), .ks(ks), .kd(kd),
                 .busy(), .done(t_done), .f(force_a), .valid(t_valid));
             for (k = 0; k < DIM; k = k + 1) begin : g_lane
-                fx_add #(.W(W)) u_a (.sub(1'b0), .a(a_acc[k*W +: W]), .b(force_a[k*W +: W]), .y(a_sum[k*W +: W]), .sat());
-                fx_add #(.W(W)) u_b (.sub(1'b1), .a(b_acc[k*W +: W]), .b(force_a[k*W +: W]), .y(b_sum[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_a (.sub(1'b0), .a(a_acc[k*W +: W]), .b(force_a[k*W +: W]), .y(a_sum[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(1)) u_b (.sub(1'b1), .a(b_acc[k*W +: W]), .b(force_a[k*W +: W]), .y(b_sum[k*W +: W]), .sat());
             end
             /* verilator lint_on PINCONNECTEMPTY */
             wire unused_pins = &{1'b0, a_pin, b_pin, b_pos};
@@ -199,8 +199,8 @@ module pair_sequencer #(
                 fx_avg #(.W(W)) u_h (.a(e), .b({W{1'b0}}), .y(h));
                 wire [W-1:0] move = both_free ? h : e;  // what a and b move by
                 // saturation flags are not needed: the saturated value is the result
-                fx_add #(.W(W)) u_a (.sub(1'b0), .a(a_pos[k*W +: W]), .b(move), .y(a_sum[k*W +: W]), .sat());
-                fx_add #(.W(W)) u_b (.sub(1'b1), .a(b_pos[k*W +: W]), .b(move), .y(b_sum[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_a (.sub(1'b0), .a(a_pos[k*W +: W]), .b(move), .y(a_sum[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(1)) u_b (.sub(1'b1), .a(b_pos[k*W +: W]), .b(move), .y(b_sum[k*W +: W]), .sat());
             end
             /* verilator lint_on PINCONNECTEMPTY */
             wire unused_force = &{1'b0, ks, kd, a_prev, a_acc, b_acc, rd_prev, rd_acc};

@@ -93,10 +93,10 @@ module spring_force #(
             wire [W-1:0] va, vb;
             /* verilator lint_off PINCONNECTEMPTY */
             // saturation flags are not needed: the saturated value is the result
-            fx_add #(.W(W)) u_d  (.sub(1'b1), .a(b[k*W +: W]), .b(a[k*W +: W]),   .y(d_new[k*W +: W]), .sat());
-            fx_add #(.W(W)) u_va (.sub(1'b1), .a(a[k*W +: W]), .b(a_p[k*W +: W]), .y(va), .sat());
-            fx_add #(.W(W)) u_vb (.sub(1'b1), .a(b[k*W +: W]), .b(b_p[k*W +: W]), .y(vb), .sat());
-            fx_add #(.W(W)) u_dv (.sub(1'b1), .a(vb), .b(va), .y(dv_new[k*W +: W]), .sat());
+            fx_add #(.W(W), .SUB(1)) u_d  (.sub(1'b1), .a(b[k*W +: W]), .b(a[k*W +: W]),   .y(d_new[k*W +: W]), .sat());
+            fx_add #(.W(W), .SUB(1)) u_va (.sub(1'b1), .a(a[k*W +: W]), .b(a_p[k*W +: W]), .y(va), .sat());
+            fx_add #(.W(W), .SUB(1)) u_vb (.sub(1'b1), .a(b[k*W +: W]), .b(b_p[k*W +: W]), .y(vb), .sat());
+            fx_add #(.W(W), .SUB(1)) u_dv (.sub(1'b1), .a(vb), .b(va), .y(dv_new[k*W +: W]), .sat());
             /* verilator lint_on PINCONNECTEMPTY */
         end
     endgenerate
@@ -109,8 +109,8 @@ module spring_force #(
     wire [W-1:0]   acc_sum;  // vn + dv[ax] u[ax], then t + kd vn
     /* verilator lint_off PINCONNECTEMPTY */
     fx_mul #(.W(W), .F(F)) u_mul (.a(mul_a), .b(mul_b), .y(mul_round), .prod(mul_exact), .sat());
-    fx_add #(.W(W)) u_stretch (.sub(1'b1), .a(len_q), .b(rest_q), .y(stretch), .sat());
-    fx_add #(.W(W)) u_acc (.sub(1'b0), .a(state_q == S_KD ? t_q : vn_q), .b(mul_round), .y(acc_sum), .sat());
+    fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len_q), .b(rest_q), .y(stretch), .sat());
+    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(state_q == S_KD ? t_q : vn_q), .b(mul_round), .y(acc_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     always @* begin

@@ -107,9 +107,9 @@ module strand_core #(
         .mouse_q(mouse_q), .mouse_down_q(mouse_down_q),
         .init_we(init_we), .init_addr(init_addr), .init_pos(init_pos), .init_prev(init_prev));
     assign busy = phase != PH_IDLE;
-    // NODE and EDGE writes load the body: only when idle
-    wire node_we = node_we_any && phase == PH_IDLE;
-    wire edge_we = edge_we_any && phase == PH_IDLE;
+    // NODE and EDGE writes load a graph's body, only when idle (a chain is laid out by CMD)
+    wire node_we = node_we_any && phase == PH_IDLE && GRAPH;
+    wire edge_we = edge_we_any && phase == PH_IDLE && GRAPH;
     wire [AW-1:0] edge_a      = cfg_data[AW-1:0];
     wire [AW-1:0] edge_b      = cfg_data[2*AW-1:AW];
     wire          edge_spring = cfg_data[(2*AW < W ? 2*AW : W-1)];

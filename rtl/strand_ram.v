@@ -18,9 +18,9 @@
  * Where it goes: a memory of DEPTH >= BLOCK_MIN words asks for block RAM
  * (ram_style "block": SB_RAM40_4K on iCE40, DP16KD on ECP5, RAMB18 on 7-series);
  * a smaller one for distributed RAM ("distributed": LUT RAM on ECP5 and Xilinx; the
- * iCE40 has none and uses flip-flops). A second read port that is used (port B)
- * makes Yosys store the memory twice, each copy with one read port. An address at
- * or past DEPTH must not be written; a read there gives an undefined word.
+ * iCE40 has none and uses flip-flops). A second read port (READ_B) makes Yosys store
+ * the memory twice, each copy with one read port. An address at or past DEPTH must
+ * not be written; a read there gives an undefined word.
  *
  * Latency: 1 cycle per read; throughput one write and two reads per cycle.
  */
@@ -28,7 +28,8 @@ module strand_ram #(
     parameter integer WIDTH     = 32, // bits per word
     parameter integer DEPTH     = 16, // words
     parameter integer ABITS     = 4,  // address bits, 2^ABITS >= DEPTH
-    parameter integer BLOCK_MIN = 64  // DEPTH at or above which block RAM is asked for
+    parameter integer BLOCK_MIN = 64, // DEPTH at or above which block RAM is asked for
+    parameter [0:0]   READ_B    = 1'b1 // 0: no port B (rdata_b is 0)
 ) (
     input  wire             clk,
     input  wire             we,
@@ -45,17 +46,28 @@ module strand_ram #(
     `STRAND_CHECK(strand_ram_ABITS_too_narrow, (1 << ABITS) >= DEPTH && DEPTH >= 1,
                   ("strand_ram: ABITS=%0d cannot address DEPTH=%0d words in %m", ABITS, DEPTH))
 
+    // the storage: one array, its style by size; the read ports below read it
+    wire [WIDTH-1:0] word_a, word_b;
     generate
         if (DEPTH >= BLOCK_MIN) begin : g_block
             (* ram_style = "block" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
             always @(posedge clk) if (we) mem[waddr] <= wdata;
-            always @(posedge clk) if (re_a) rdata_a <= mem[raddr_a];
-            always @(posedge clk) if (re_b) rdata_b <= mem[raddr_b];
+            assign word_a = mem[raddr_a];
+            assign word_b = mem[raddr_b];
         end else begin : g_small
             (* ram_style = "distributed" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
             always @(posedge clk) if (we) mem[waddr] <= wdata;
-            always @(posedge clk) if (re_a) rdata_a <= mem[raddr_a];
-            always @(posedge clk) if (re_b) rdata_b <= mem[raddr_b];
+            assign word_a = mem[raddr_a];
+            assign word_b = mem[raddr_b];
+        end
+    endgenerate
+    always @(posedge clk) if (re_a) rdata_a <= word_a;
+    generate
+        if (READ_B) begin : g_port_b
+            always @(posedge clk) if (re_b) rdata_b <= word_b;
+        end else begin : g_no_port_b
+            always @(posedge clk) rdata_b <= {WIDTH{1'b0}};  // a constant: synthesis removes it
+            wire unused_b = &{1'b0, re_b, raddr_b, word_b};
         end
     endgenerate
 

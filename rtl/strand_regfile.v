@@ -17,6 +17,10 @@
  *
  * box_neg is -box per axis, exact in W+1 bits, formed once here for every unit's
  * in-touch test.
+ *
+ * A register the build does not use (its effect is switched off: KS without springs,
+ * START in a graph, LOAD in a chain, ...) reads as 0 and is not built: the register
+ * has no reader, so synthesis removes it, even with the hierarchy kept.
  */
 module strand_regfile #(
 `include "strand_params.vh"
@@ -36,14 +40,14 @@ module strand_regfile #(
     output wire [DIM*W-1:0] prev_off,
     output wire [DIM*W-1:0] load_pos,   // a NODE write's position and previous position
     output wire [DIM*W-1:0] load_prev,
-    output reg  [W-1:0]     rest_len,
-    output reg  [W-1:0]     impulse,
-    output reg  [W-1:0]     damping,
-    output reg  [W-1:0]     ks,
-    output reg  [W-1:0]     kd,
-    output reg  [W-1:0]     ground,
-    output reg  [W-1:0]     friction,
-    output reg  [W-1:0]     edge_rest,
+    output wire [W-1:0]     rest_len,
+    output wire [W-1:0]     impulse,
+    output wire [W-1:0]     damping,
+    output wire [W-1:0]     ks,
+    output wire [W-1:0]     kd,
+    output wire [W-1:0]     ground,
+    output wire [W-1:0]     friction,
+    output wire [W-1:0]     edge_rest,
 
     output wire             cmd_init,   // strobes
     output wire             pin_we,
@@ -60,31 +64,47 @@ module strand_regfile #(
     assign edge_we  = cfg_we && cfg_addr == `STRAND_REG_EDGE;
     assign irq_ack  = cfg_we && cfg_addr == `STRAND_REG_IRQ_ACK;
 
+    // which registers the build uses
+    localparam [0:0] USE_REST    = !GRAPH && (EN_CONSTRAINTS || EN_SPRINGS);  // a chain's links
+    localparam [0:0] USE_IMPULSE = EN_MOUSE && !GRAB;
+    localparam [0:0] USE_BOX     = EN_MOUSE;
+    localparam [0:0] USE_LAYOUT  = !GRAPH;   // START, STEP, PREV: the init walk
+    localparam [0:0] USE_LOAD    = GRAPH;    // LOAD_*, EDGE_REST: NODE and EDGE writes
+
     // ---- the scalar constants ----
+    reg [W-1:0] rest_q, impulse_q, damping_q, ks_q, kd_q, ground_q, friction_q, edge_rest_q;
     always @(posedge clk) begin
         if (reset) begin
-            rest_len  <= {W{1'b0}};
-            impulse   <= {W{1'b0}};
-            damping   <= {W{1'b0}};
-            ks        <= {W{1'b0}};
-            kd        <= {W{1'b0}};
-            ground    <= {W{1'b0}};
-            friction  <= {W{1'b0}};
-            edge_rest <= {W{1'b0}};
+            rest_q      <= {W{1'b0}};
+            impulse_q   <= {W{1'b0}};
+            damping_q   <= {W{1'b0}};
+            ks_q        <= {W{1'b0}};
+            kd_q        <= {W{1'b0}};
+            ground_q    <= {W{1'b0}};
+            friction_q  <= {W{1'b0}};
+            edge_rest_q <= {W{1'b0}};
         end else if (cfg_we) begin
             case (cfg_addr)
-                `STRAND_REG_DIST:      rest_len  <= cfg_data;
-                `STRAND_REG_IMPULSE:   impulse   <= cfg_data;
-                `STRAND_REG_DAMPING:   damping   <= cfg_data;
-                `STRAND_REG_KS:        ks        <= cfg_data;
-                `STRAND_REG_KD:        kd        <= cfg_data;
-                `STRAND_REG_GROUND:    ground    <= cfg_data;
-                `STRAND_REG_FRICTION:  friction  <= cfg_data;
-                `STRAND_REG_EDGE_REST: edge_rest <= cfg_data;
+                `STRAND_REG_DIST:      rest_q      <= cfg_data;
+                `STRAND_REG_IMPULSE:   impulse_q   <= cfg_data;
+                `STRAND_REG_DAMPING:   damping_q   <= cfg_data;
+                `STRAND_REG_KS:        ks_q        <= cfg_data;
+                `STRAND_REG_KD:        kd_q        <= cfg_data;
+                `STRAND_REG_GROUND:    ground_q    <= cfg_data;
+                `STRAND_REG_FRICTION:  friction_q  <= cfg_data;
+                `STRAND_REG_EDGE_REST: edge_rest_q <= cfg_data;
                 default: ;
             endcase
         end
     end
+    assign rest_len  = USE_REST    ? rest_q      : {W{1'b0}};
+    assign impulse   = USE_IMPULSE ? impulse_q   : {W{1'b0}};
+    assign damping   = EN_DAMPING  ? damping_q   : {W{1'b0}};
+    assign ks        = EN_SPRINGS  ? ks_q        : {W{1'b0}};
+    assign kd        = EN_SPRINGS  ? kd_q        : {W{1'b0}};
+    assign ground    = EN_GROUND   ? ground_q    : {W{1'b0}};
+    assign friction  = EN_GROUND   ? friction_q  : {W{1'b0}};
+    assign edge_rest = USE_LOAD    ? edge_rest_q : {W{1'b0}};
 
     // ---- the per-axis constants: one lane per axis, each register at its axis's address ----
     localparam [3*AB-1:0] A_GDT2  = {`STRAND_REG_GDT2_Z,  `STRAND_REG_GDT2_Y,  `STRAND_REG_GDT2_X};
@@ -118,15 +138,15 @@ module strand_regfile #(
                 end
             end
             wire [W:0] neg = {W+1{1'b0}} - {box_q[W-1], box_q};  // exact
-            assign gdt2[k*W +: W]      = gdt2_q;
-            assign box[k*W +: W]       = box_q;
-            assign box_neg[k*W +: W]   = neg[W-1:0];
-            assign box_neg_top[k]      = neg[W];
-            assign start_pos[k*W +: W] = start_q;
-            assign step_pos[k*W +: W]  = step_q;
-            assign prev_off[k*W +: W]  = prev_q;
-            assign load_pos[k*W +: W]  = load_q;
-            assign load_prev[k*W +: W] = loadp_q;
+            assign gdt2[k*W +: W]      = EN_GRAVITY ? gdt2_q : {W{1'b0}};
+            assign box[k*W +: W]       = USE_BOX ? box_q : {W{1'b0}};
+            assign box_neg[k*W +: W]   = USE_BOX ? neg[W-1:0] : {W{1'b0}};
+            assign box_neg_top[k]      = USE_BOX && neg[W];
+            assign start_pos[k*W +: W] = USE_LAYOUT ? start_q : {W{1'b0}};
+            assign step_pos[k*W +: W]  = USE_LAYOUT ? step_q : {W{1'b0}};
+            assign prev_off[k*W +: W]  = USE_LAYOUT ? prev_q : {W{1'b0}};
+            assign load_pos[k*W +: W]  = USE_LOAD ? load_q : {W{1'b0}};
+            assign load_prev[k*W +: W] = USE_LOAD ? loadp_q : {W{1'b0}};
         end
     endgenerate
 

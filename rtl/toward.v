@@ -94,7 +94,7 @@ module toward #(
     genvar k;
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_lane
-            fx_add #(.W(W)) u_d (.sub(1'b1), .a(c[k*W +: W]), .b(p[k*W +: W]), .y(d_new[k*W +: W]), .sat());
+            fx_add #(.W(W), .SUB(1)) u_d (.sub(1'b1), .a(c[k*W +: W]), .b(p[k*W +: W]), .y(d_new[k*W +: W]), .sat());
         end
     endgenerate
     fx_add #(.W(W)) u_t (.sub(excess_q), .a(excess_q ? d_ax : p_ax), .b(mul_round), .y(t_sum), .sat());

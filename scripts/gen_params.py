@@ -35,6 +35,11 @@ import sys
 # lo, hi    the legal range (expressions; inclusive)
 # effect    what it belongs to (docs/effects.md, docs/architecture.md)
 # meaning   what it sets
+#
+# ONLY below names the switch without which a parameter has no effect: an instance
+# below strand_core receives its default then (strand_params_pass.vh), so that a
+# build's modules do not depend on a parameter its effects never read (synthesis
+# names a module by its parameters, and the effects gating check compares builds).
 PARAMS = [
     # name            default   lo  hi      effect         meaning
     ("W",              "32",     "8", "32",   "format",      "word width, bits: signed two's complement Q(W-F).F"),
@@ -63,13 +68,26 @@ PARAMS = [
     ("RAM_BLOCK_MIN",  "64",     "1", "1048576", "storage",  "a node or edge memory of at least this many entries asks for block RAM; smaller ones for LUT RAM or flip-flops"),
 ]
 
+ONLY = {
+    "SQRT_BITS": "EN_CONSTRAINTS || EN_SPRINGS",
+    "DIV_BITS": "EN_CONSTRAINTS || EN_SPRINGS",
+    "ITER": "EN_CONSTRAINTS",
+    "GRAB": "EN_MOUSE",
+    "RULE": "EN_CONSTRAINTS",
+    "GROUND_AXIS": "EN_GROUND",
+    "GROUND_ABOVE": "EN_GROUND",
+    "E_RODS": "GRAPH && EN_CONSTRAINTS",
+    "E_SPRINGS": "GRAPH && EN_SPRINGS",
+}
+
 # Derived widths: parameters of the header too (ports need them) that nobody sets;
 # strand_params_check.vh stops elaboration when one is overridden with another value.
 DERIVED = [
     ("UW", "clog2_1(M)", "unit index bits"),
     ("IW", "clog2_1(K)", "node index bits within a unit"),
     ("AW", "UW + IW", "a node address {unit, node}"),
-    ("CW", "clog2(max(M * K, max(E_RODS, E_SPRINGS)) + 1)", "the walk's counter: nodes or edges of a pass"),
+    ("CW", "clog2(max(M * K, max(GRAPH && EN_CONSTRAINTS ? E_RODS : 1, GRAPH && EN_SPRINGS ? E_SPRINGS : 1)) + 1)",
+     "the walk's counter: nodes or edges of a pass"),
     ("SW", "clog2_1(SUBSTEPS)", "substep counter bits"),
     ("DBG_W", "DEBUG ? 3 + 2 + UW + IW + CW + M * (1 + IW + 3 * W) : 1",
      "the dbg port: {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} per unit lane, or 1"),
@@ -197,8 +215,14 @@ def main():
     local += [f"    localparam integer {n:<15} = {translate(x, names, 'v')};" for n, x, m in DERIVED]
     write(out, "strand_params_scene_local.vh", [f"// {head}", "// One scene's build (the `STRAND_* macros of hwgen's params.vh) as localparams,",
                                                 "// for a testbench that drives sim_top."] + local)
-    write(out, "strand_params_pass.vh", [f"// {head}", "// Every parameter of strand_core, passed on to an instance."]
-          + ["    " + ", ".join(f".{n}({n})" for n in base)])
+    def passed(name, default, lo, hi):
+        if name not in ONLY:
+            return f".{name}({name})"
+        dflt = f"1'b{default}" if is_switch(lo, hi) else translate(default, names, "v")
+        return f".{name}(({translate(ONLY[name], names, 'v')}) ? {name} : {dflt})"
+    write(out, "strand_params_pass.vh", [f"// {head}", "// Every parameter of strand_core, passed on to an instance; one that has no",
+                                         "// effect in this build (ONLY in the table) is passed as its default."]
+          + ["    " + ",\n    ".join(passed(r[0], r[1], r[2], r[3]) for r in PARAMS)])
 
     chk = [f"// {head}", "// The legal ranges and combinations of strand_core's parameters; included in its body",
            "// (rtl/strand_defs.vh defines STRAND_CHECK)."]
