@@ -17,8 +17,8 @@
  *
  * Where it goes: a memory of DEPTH >= BLOCK_MIN words asks for block RAM
  * (ram_style "block": SB_RAM40_4K on iCE40, DP16KD on ECP5, RAMB18 on 7-series);
- * a smaller one for distributed RAM ("distributed": LUT RAM on ECP5 and Xilinx; the
- * iCE40 has none and uses flip-flops). A second read port (READ_B) makes Yosys store
+ * a smaller one asks for nothing, and Yosys picks by cost: LUT RAM on ECP5 and
+ * Xilinx, flip-flops on iCE40 (which has no LUT RAM). A second read port (READ_B) makes Yosys store
  * the memory twice, each copy with one read port. An address at or past DEPTH must
  * not be written; a read there gives an undefined word.
  *
@@ -55,7 +55,7 @@ module strand_ram #(
             assign word_a = mem[raddr_a];
             assign word_b = mem[raddr_b];
         end else begin : g_small
-            (* ram_style = "distributed" *) reg [WIDTH-1:0] mem [0:DEPTH-1];
+            reg [WIDTH-1:0] mem [0:DEPTH-1];  // no request: the tool picks by cost
             always @(posedge clk) if (we) mem[waddr] <= wdata;
             assign word_a = mem[raddr_a];
             assign word_b = mem[raddr_b];
