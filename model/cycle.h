@@ -86,7 +86,9 @@ typedef struct {
     /* node units (they run in step) */
     bool running, done;
     bool ground_pass; /* the pass under way is the ground pass */
-    int vidx;
+    int vidx;         /* stage A: the node whose data arrive */
+    bool pass_b, ground_b; /* stage B: a node of a pass (of the ground pass) is written */
+    int idx_b;
     fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS];
     bool wb_valid[CYC_MAX_UNITS];
     uint32_t wb_idx[CYC_MAX_UNITS];

@@ -10,14 +10,9 @@
  *
  * Ports:   a, b, y are signed two's complement Q(W-F).F, W bits; prod is the
  *          exact signed 2W-bit product a * b, before rounding.
- * Algorithm: p = a * b, the exact signed 2W-bit product (Q(2W-2F).2F).
- *          q = p >>> F is the floor of p / 2^F (2W-F bits). Of the F dropped bits,
- *          the top one is "half" (worth half an LSB) and the OR of the others is
- *          "sticky". q is incremented when the dropped part is above one half
- *          (half & sticky) or exactly one half and q is odd (half & q[0]).
- *          The increment cannot overflow 2W-F bits: the largest q, 2^(2W-2-F),
- *          comes from (-2^(W-1))^2 whose dropped bits are zero.
- *          The rounded value is clamped to the W-bit range.
+ * Algorithm: p = a * b, the exact signed 2W-bit product (Q(2W-2F).2F), then
+ *          fx_round: p / 2^F rounded to nearest (ties to even) and clamped to the
+ *          W-bit range (fx_round.v has the details).
  * Rounding: to nearest, ties to even (unbiased: a resting rope does not creep).
  * Overflow: saturates to 2^(W-1)-1 or -2^(W-1); sat = 1 when clamping happened.
  * Latency: combinational, 0 cycles; throughput one result per cycle. The W x W
@@ -25,45 +20,29 @@
  */
 module fx_mul #(
     parameter integer W = 32, // total width in bits, 8..32
-    parameter integer F = 16  // fraction bits, 1..W-2
+    parameter integer F = 16, // fraction bits, 1..W-2
+    parameter [0:0]   ROUND = 1'b1 // 0: the exact product only (y and sat are 0): a pipeline rounds it later
 ) (
     input  wire [W-1:0]   a,    // signed Q(W-F).F
     input  wire [W-1:0]   b,    // signed Q(W-F).F
-    output reg  [W-1:0]   y,    // signed Q(W-F).F, rounded and saturated
-    output reg            sat,  // 1 when y was clamped
+    output wire [W-1:0]   y,    // signed Q(W-F).F, rounded and saturated
+    output wire           sat,  // 1 when y was clamped
     output wire [2*W-1:0] prod  // the exact product, signed Q(2W-2F).2F (sums of squares use it unrounded)
 );
 
-    // FS is a clamped copy of F so that elaboration gets as far as reporting it.
     `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_mul: W must be 8..32 (W=%0d) in %m", W))
     `STRAND_CHECK(F_must_be_1_to_W_minus_2, F >= 1 && F <= W - 2, ("fx_mul: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F))
 
-    localparam integer FS = (F < 1) ? 1 : (F > W - 2) ? W - 2 : F; // F, clamped
-    localparam integer QW = 2 * W - FS;                            // width of the shifted product
-
     wire signed [2*W-1:0] p = $signed(a) * $signed(b); // exact product
     assign prod = p;
-    wire [QW-1:0] q    = p[2*W-1:FS];                 // floor(p / 2^F)
-    wire [FS-1:0] drop = p[FS-1:0];                   // bits shifted out
-    wire [FS-1:0] rest = drop << 1;                   // dropped bits below "half"
-    wire          half   = drop[FS-1];
-    wire          sticky = |rest;
-    wire          round_up = half & (sticky | q[0]);
-    wire [QW-1:0] qr   = q + {{(QW-1){1'b0}}, round_up};
-
-    // qr fits W bits when its bits QW-1 .. W-1 are all copies of the sign.
-    wire [QW-W:0] top  = qr[QW-1:W-1];
-    wire          fits = (top == {(QW-W+1){1'b0}}) || (top == {(QW-W+1){1'b1}});
-
-    always @* begin
-        sat = !fits;
-        if (fits)
-            y = qr[W-1:0];
-        else if (qr[QW-1])
-            y = {1'b1, {(W-1){1'b0}}}; // below the range: minimum
-        else
-            y = {1'b0, {(W-1){1'b1}}}; // above the range: maximum
-    end
+    generate
+        if (ROUND) begin : g_round
+            fx_round #(.W(W), .F(F)) u_round (.prod(p), .y(y), .sat(sat));
+        end else begin : g_exact
+            assign y   = {W{1'b0}};
+            assign sat = 1'b0;
+        end
+    endgenerate
 
 endmodule
 

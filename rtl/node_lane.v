@@ -28,8 +28,12 @@
  * else the external data (init walk, NODE loads, the sequencer), a pinned node's
  * previous position = its position (it starts at rest).
  *
- * Timing: combinational from port A's registered data; storage reads are
- * synchronous (address now, data next cycle), read before write.
+ * Timing: a pass is a two-stage pipeline. Stage A, the cycle port A's data arrive:
+ * the Verlet step (or the ground test) of that node, registered. Stage B, the next
+ * cycle: the mouse test and impulse on the registered result, and the write. So
+ * no path holds both the Verlet step's adders and the mouse's; a node is written two
+ * cycles after its address. Storage reads are synchronous (address now, data next
+ * cycle), read before write.
  */
 module node_lane #(
 `include "strand_params.vh"
@@ -51,9 +55,10 @@ module node_lane #(
     input  wire [W-1:0]  acc_w,
 
     // how the write is formed
-    input  wire          running,    // a pass is under way: write its result
-    input  wire          ground_q,   //   the ground pass
-    input  wire          grab_q,     //   the node is the grabbed one (GRAB)
+    input  wire          stage_a,    // a pass's node is in stage A (its data arrive now)
+    input  wire          pass_b,     // a pass's node is in stage B: write its result
+    input  wire          ground_b,   //   the ground pass
+    input  wire          grab_b,     //   the node is the grabbed one (GRAB)
     input  wire          w_pin,      // an external write to a pinned node: at rest
     input  wire [W-1:0]  w_pos,      // external write data
     input  wire [W-1:0]  w_prev,
@@ -74,18 +79,27 @@ module node_lane #(
     output wire [W-1:0]  qp,
     output wire [W-1:0]  qa,
     output wire [W-1:0]  b_data,     // port B: position (node_unit masks unwritten nodes)
-    output wire          touch,      // |mouse - n| < box on this axis
-    output wire          hit,        // AXIS = GROUND_AXIS: past the boundary
+    output wire          touch,      // stage B: |mouse - n| < box on this axis
+    output wire          hit,        // stage B, AXIS = GROUND_AXIS: past the boundary
     output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)
 );
 
     // ---- storage ----
-    wire [W-1:0] n;     // the Verlet result
-    wire [W-1:0] np;    // the previous position after the mouse impulse
-    wire [W-1:0] g, gp; // the ground pass's result
+    wire [W-1:0] n;          // stage A: the Verlet result
+    wire [W-1:0] g, gp;      // stage A: the ground pass's result
+    wire         hit_a;
+    reg  [W-1:0] n_b, q_b;   // stage B: the Verlet result, the old position
+    wire [W-1:0] g_b, gp_b;  // stage B: the ground pass's result
+    wire [W-1:0] np;         // stage B: the previous position after the mouse impulse
     wire [W-1:0] wprev_data;
-    assign wdata      = running ? (ground_q ? g : grab_q ? mouse : n) : w_pos;
-    assign wprev_data = running ? (ground_q ? gp : np) : w_pin ? w_pos : w_prev;
+    always @(posedge clk) begin  // datapath registers: pass_b says when they hold a node
+        if (stage_a) begin
+            n_b <= n;
+            q_b <= q;
+        end
+    end
+    assign wdata      = pass_b ? (EN_GROUND && ground_b ? g_b : GRAB && grab_b ? mouse : n_b) : w_pos;
+    assign wprev_data = pass_b ? (EN_GROUND && ground_b ? gp_b : np) : w_pin ? w_pos : w_prev;
 
     strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pos (
         .clk(clk), .we(we), .waddr(widx), .wdata(wdata),
@@ -144,34 +158,34 @@ module node_lane #(
         end
     endgenerate
 
-    // ---- the mouse: this axis's in-touch test, and the impulse (x only) ----
+    // ---- stage B, the mouse: this axis's in-touch test, and the impulse (x only) ----
     generate
         if (EN_MOUSE && !GRAB) begin : g_mouse
             // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, both exact in W+1 bits
             // (a saturated difference is never inside the box): no saturating subtract,
             // no negation per node
-            wire [W:0] dd = {mouse[W-1], mouse} - {n[W-1], n};
+            wire [W:0] dd = {mouse[W-1], mouse} - {n_b[W-1], n_b};
             assign touch = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
             if (AXIS == 0) begin : g_impulse
                 // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left of x)
                 wire [W-1:0] pushed;
-                fx_add #(.W(W)) u_push (.sub(!($signed(mouse) < $signed(q))), .a(n), .b(impulse), .y(pushed), .sat());
-                assign np = in_touch ? pushed : q;
+                fx_add #(.W(W)) u_push (.sub(!($signed(mouse) < $signed(q_b))), .a(n_b), .b(impulse), .y(pushed), .sat());
+                assign np = in_touch ? pushed : q_b;
             end else begin : g_no_impulse
-                assign np = q;
+                assign np = q_b;
                 wire unused_impulse = &{1'b0, impulse, in_touch};
             end
         end else begin : g_no_mouse
             assign touch = 1'b1;
-            assign np = q;
+            assign np = q_b;
             wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch};
         end
     endgenerate
 
-    // ---- the ground pass: collision with friction ----
+    // ---- the ground pass: collision with friction (stage A, registered for stage B) ----
     generate
         if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
-            assign hit = GROUND_ABOVE ? $signed(q) < $signed(ground) : $signed(ground) < $signed(q);
+            assign hit_a = GROUND_ABOVE ? $signed(q) < $signed(ground) : $signed(ground) < $signed(q);
             fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v), .y(gp), .sat());
             assign g = ground;
             wire unused_friction = &{1'b0, friction};
@@ -179,14 +193,31 @@ module node_lane #(
             wire [W-1:0] slip;
             fx_mul #(.W(W), .F(F)) u_slip (.a(v), .b(friction), .y(slip), .sat(), .prod());
             fx_add #(.W(W), .SUB(0)) u_fp (.sub(1'b0), .a(qp), .b(slip), .y(gp), .sat());
-            assign g   = q;
-            assign hit = 1'b0;
+            assign g     = q;
+            assign hit_a = 1'b0;
             wire unused_ground = &{1'b0, ground};
         end else begin : g_no_ground
-            assign g   = q;
-            assign gp  = qp;
-            assign hit = 1'b0;
-            wire unused_ground = &{1'b0, ground, friction, ground_q};
+            assign g     = q;
+            assign gp    = qp;
+            assign hit_a = 1'b0;
+            wire unused_ground = &{1'b0, ground, friction, ground_b, g, gp, hit_a};
+        end
+        if (EN_GROUND) begin : g_ground_b
+            reg [W-1:0] g_q, gp_q;
+            reg         hit_q;
+            always @(posedge clk)
+                if (stage_a) begin
+                    g_q   <= g;
+                    gp_q  <= gp;
+                    hit_q <= hit_a;
+                end
+            assign g_b  = g_q;
+            assign gp_b = gp_q;
+            assign hit  = hit_q;
+        end else begin : g_no_ground_b
+            assign g_b  = {W{1'b0}};
+            assign gp_b = {W{1'b0}};
+            assign hit  = 1'b0;
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */

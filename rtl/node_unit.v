@@ -31,10 +31,11 @@
  * reset: after reset a step before they are filled computes on undefined values.
  *
  * Timing (the cycle model mirrors it): verlet_start seen at edge 0 clears
- * verlet_done and presents address 0; edges 1..K write nodes 0..K-1; verlet_done
- * rises at edge K and stays high until the next start. With DEBUG, every write to
- * this unit (pass, init, load or sequencer) shows on the write-back lane in the next
- * cycle.
+ * verlet_done and presents address 0; node i's data arrive in cycle i + 1 (stage A:
+ * the Verlet step), it is written at edge i + 2 (stage B: the mouse, the write);
+ * verlet_done rises at edge K + 1 and stays high until the next start. The ground
+ * pass is timed the same. With DEBUG, every write to this unit (pass, init, load or
+ * sequencer) shows on the write-back lane in the next cycle.
  */
 module node_unit #(
 `include "strand_params.vh"
@@ -97,13 +98,16 @@ module node_unit #(
     localparam [IW:0]   K_COUNT  = K[IW:0];           // node count, one bit wider than an index
     localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];  // index of the last node
 
-    // ---- the pass FSM ----
-    reg          running_q, running_d;  // a pass is under way
+    // ---- the pass FSM: stage A (running, vidx: the node whose data arrive) and stage B
+    // (pass_b, idx_b: the node written) ----
+    reg          running_q, running_d;  // a pass is under way: a node is in stage A
     reg          done_q, done_d;        // FV
     reg [IW-1:0] vidx_q, vidx_d;        // node whose data port A returns this cycle
     reg          ground_q, ground_d;    // the pass under way is the ground pass
+    reg          pass_b, ground_b, pin_b, grab_b;  // stage B: a node of the pass, and how to write it
+    reg [IW-1:0] idx_b;
 
-    wire last       = vidx_q == K_LAST;
+    wire last = vidx_q == K_LAST;
     wire pass_start = verlet_start || (EN_GROUND && ground_start);
 
     always @* begin
@@ -116,12 +120,12 @@ module node_unit #(
             done_d    = 1'b0;
             vidx_d    = {IW{1'b0}};
             ground_d  = !verlet_start;
-        end else if (running_q) begin
-            vidx_d = vidx_q + 1'b1;
-            if (last) begin
-                running_d = 1'b0;
-                done_d    = 1'b1;
+        end else begin
+            if (running_q) begin
+                vidx_d = vidx_q + 1'b1;
+                if (last) running_d = 1'b0;
             end
+            if (pass_b && idx_b == K_LAST) done_d = 1'b1;  // the last node is written
         end
     end
 
@@ -131,11 +135,19 @@ module node_unit #(
             done_q    <= 1'b0;
             vidx_q    <= {IW{1'b0}};
             ground_q  <= 1'b0;
+            pass_b    <= 1'b0;
         end else begin
             running_q <= running_d;
             done_q    <= done_d;
             vidx_q    <= vidx_d;
             ground_q  <= ground_d;
+            pass_b    <= running_q;
+        end
+        if (running_q) begin  // what stage B needs of the node
+            idx_b    <= vidx_q;
+            ground_b <= ground_q;
+            pin_b    <= q_pin;
+            grab_b   <= q_grab;
         end
     end
 
@@ -154,19 +166,19 @@ module node_unit #(
         end
     assign a_pinned = q_pin || q_grab;
 
-    // ---- writes: the pass, else port A's writer ----
+    // ---- writes: the pass's stage B, else port A's writer ----
     // The grabbed node (GRAB): the Verlet pass puts it on the pointer, px = its old x;
     // the ground pass leaves it alone.
     wire [DIM-1:0] touch, hit;
     wire           in_touch = mouse_down && &touch;
     wire           g_hit    = |hit;    // only the normal axis's lane can hit
-    wire           pass_we  = running_q && !q_pin && (!ground_q || (g_hit && !q_grab));
-    wire [IW-1:0]  widx     = running_q ? vidx_q : w_idx;
+    wire           pass_we  = pass_b && !pin_b && (!ground_b || (g_hit && !grab_b));
+    wire [IW-1:0]  widx     = pass_b ? idx_b : w_idx;
     wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
-    wire           wprev    = running_q || w_at_rest;
+    wire           wprev    = pass_b || w_at_rest;
     wire           w_pin    = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
-    // the force: the Verlet pass consumes node vidx's, the init walk and loads clear node w_idx's
-    wire           acc_clear = (running_q && !ground_q) || (w_en && w_at_rest);
+    // the force: the Verlet pass consumes node idx_b's, the init walk and loads clear node w_idx's
+    wire           acc_clear = (pass_b && !ground_b) || (w_en && w_at_rest);
     wire [DIM*W-1:0] wdata;
     wire [DIM*W-1:0] b_pos_raw;  // port B before the written flags
 
@@ -181,7 +193,7 @@ module node_unit #(
                 .we(we), .wprev(wprev), .widx(widx),
                 .acc_clear(acc_clear && {1'b0, widx} < K_COUNT), .acc_clear_idx(widx),
                 .acc_we(acc_we && {1'b0, w_idx} < K_COUNT), .acc_w(acc_w[k*W +: W]),
-                .running(running_q), .ground_q(ground_q), .grab_q(q_grab), .w_pin(w_pin),
+                .stage_a(running_q), .pass_b(pass_b), .ground_b(ground_b), .grab_b(grab_b), .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
                 .gdt2(gdt2[k*W +: W]), .damping(damping), .impulse(impulse),
                 .box(box[k*W +: W]), .box_neg(box_neg[k*W +: W]), .box_neg_top(box_neg_top[k]),

@@ -23,17 +23,23 @@
  *
  * Datapath: one W x W multiplier shared by the DIM squares and 2 DIM + 2 products (its
  * exact 2W-bit product for the squares), one fx_sqrt, one fx_div used for each u.k;
- * the axis counter `ax` picks the lane.
+ * the axis counter `ax` picks the lane. The multiplier is pipelined as in toward.v:
+ * operands registered in the cycle an operation is issued, the exact product in the
+ * next, used (rounded, and added where the formula adds) in the cycle after. An
+ * operation that needs an earlier one's result waits for it: ks (len - rest) is
+ * issued after the vn products, kd vn when vn is complete, the F.k when f is.
  *
  * Timing, fixed whatever the data (the cycle model mirrors it). Counting the cycle
- * in which start is high as cycle 0: cycles 1 .. DIM square the lanes, the last
- * starts the root; the root is there in cycle SQRT_BITS+DIM+2 and starts the divider
- * for u.x; each u.k is there DIV_BITS+2 cycles after its divide started and starts
- * the next; then 2 DIM + 2 cycles form the products; done is high in cycle
- * LATENCY = SQRT_BITS + DIM DIV_BITS + 5 DIM + 5 (model/timing.c hw_spring_latency),
- * for one cycle. Each lane's force is new from the cycle after its product, the last
- * lane's and valid from cycle LATENCY: read them at done. They hold until the next
- * operation forms them. start is accepted only when idle or in the done cycle.
+ * in which start is high as cycle 0: cycles 1 .. DIM issue the squares, the last is
+ * used in cycle DIM + 2 and starts the root; the root is there in cycle
+ * SQRT_BITS+DIM+4 and starts the divider for u.x; each u.k is there DIV_BITS+2
+ * cycles after its divide started and starts the next; then DIM cycles issue the vn
+ * products, one ks (len - rest), one waits for vn, one issues kd vn, two wait for f,
+ * DIM issue the F.k, and the last is used two cycles later; done is high in cycle
+ * LATENCY = SQRT_BITS + DIM DIV_BITS + 5 DIM + 12 (model/timing.c hw_spring_latency),
+ * for one cycle. Each lane's force is new from the cycle after its product is used,
+ * the last lane's and valid from cycle LATENCY: read them at done. They hold until
+ * the next operation forms them. start is accepted only when idle or in the done cycle.
  */
 module spring_force #(
     parameter integer W         = 32,    // word width, bits
@@ -61,18 +67,23 @@ module spring_force #(
     `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("spring_force: W must be 8..32 (W=%0d) in %m", W))
     `STRAND_CHECK(DIM_must_be_2_or_3, DIM == 2 || DIM == 3, ("spring_force: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
-    localparam [2:0] S_IDLE = 3'd0, // waiting for start
-                     S_SQ   = 3'd1, // square d[ax]; the last lane starts the root
-                     S_SQRT = 3'd2, // wait for the root, then divide d.x by it
-                     S_DIV  = 3'd3, // wait for u[ax], then divide the next lane
-                     S_VN   = 3'd4, // vn = vn + dv[ax] u[ax]
-                     S_KS   = 3'd5, // t = ks (len - rest)
-                     S_KD   = 3'd6, // f = t + kd vn
-                     S_F    = 3'd7; // F[ax] = f u[ax]
+    localparam [3:0] S_IDLE  = 4'd0,  // waiting for start
+                     S_SQ    = 4'd1,  // issue the square of d[ax]
+                     S_ROOT  = 4'd2,  // the squares are used, the root runs; then divide d.x by it
+                     S_DIV   = 4'd3,  // wait for u[ax], then divide the next lane
+                     S_VN    = 4'd4,  // issue dv[ax] u[ax]
+                     S_KS    = 4'd5,  // issue ks (len - rest)
+                     S_KDW   = 4'd6,  // the last vn product is used
+                     S_KD    = 4'd7,  // issue kd vn
+                     S_FW    = 4'd8,  // wait for f = t + kd vn
+                     S_F     = 4'd9,  // issue f u[ax]
+                     S_DRAIN = 4'd10; // the last F is used
+    // what a product in the pipeline is for
+    localparam [2:0] K_SQ = 3'd0, K_VN = 3'd1, K_KS = 3'd2, K_KD = 3'd3, K_F = 3'd4;
     localparam integer DIM_LAST_I = DIM - 1;
     localparam [1:0]   DIM_LAST = DIM_LAST_I[1:0];
 
-    reg [2:0]       state_q, state_d;
+    reg [3:0]       state_q, state_d;
     reg [1:0]       ax_q, ax_d;
     reg             done_q, done_d;
     reg [DIM*W-1:0] d_q, dv_q, u_q;
@@ -101,46 +112,81 @@ module spring_force #(
         end
     endgenerate
 
-    // ---- the shared multiplier and its one adder ----
-    reg  [W-1:0]   mul_a, mul_b;
-    wire [W-1:0]   mul_round;
-    wire [2*W-1:0] mul_exact;
+    // ---- the multiplier pipeline: issue (operands registered), multiply (product
+    // registered), use; each stage carries its product's kind and lane ----
     wire [W-1:0]   stretch;  // len - rest
-    wire [W-1:0]   acc_sum;  // vn + dv[ax] u[ax], then t + kd vn
-    /* verilator lint_off PINCONNECTEMPTY */
-    fx_mul #(.W(W), .F(F)) u_mul (.a(mul_a), .b(mul_b), .y(mul_round), .prod(mul_exact), .sat());
-    fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len_q), .b(rest_q), .y(stretch), .sat());
-    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(state_q == S_KD ? t_q : vn_q), .b(mul_round), .y(acc_sum), .sat());
-    /* verilator lint_on PINCONNECTEMPTY */
-
+    reg  [W-1:0]   mul_a, mul_b;
+    reg            issue;
+    reg  [2:0]     kind;
     always @* begin
+        issue = 1'b1;
+        kind  = K_SQ;
         mul_a = d_ax;
         mul_b = d_ax;
         case (state_q)
-            S_VN:    begin mul_a = dv_ax; mul_b = u_ax;    end
-            S_KS:    begin mul_a = ks_q;  mul_b = stretch; end
-            S_KD:    begin mul_a = kd_q;  mul_b = vn_q;    end
-            S_F:     begin mul_a = f_q;   mul_b = u_ax;    end
-            default: ;
+            S_SQ:    ;
+            S_VN:    begin kind = K_VN; mul_a = dv_ax; mul_b = u_ax;    end
+            S_KS:    begin kind = K_KS; mul_a = ks_q;  mul_b = stretch; end
+            S_KD:    begin kind = K_KD; mul_a = kd_q;  mul_b = vn_q;    end
+            S_F:     begin kind = K_F;  mul_a = f_q;   mul_b = u_ax;    end
+            default: issue = 1'b0;
         endcase
     end
+    reg  [W-1:0]   op_a, op_b;
+    reg            s1_v, s2_v;
+    reg  [2:0]     s1_kind, s2_kind;
+    reg  [1:0]     s1_ax, s2_ax;
+    reg  [2*W-1:0] prod_q;
+    wire [W-1:0]   mul_round;
+    wire [2*W-1:0] mul_exact;
+    wire           s2_last = s2_ax == DIM_LAST;
+    wire           use_sq  = s2_v && s2_kind == K_SQ;
+    wire           use_vn  = s2_v && s2_kind == K_VN;
+    wire           use_ks  = s2_v && s2_kind == K_KS;
+    wire           use_kd  = s2_v && s2_kind == K_KD;
+    wire           use_f   = s2_v && s2_kind == K_F;
+    always @(posedge clk) begin
+        if (reset) begin
+            s1_v <= 1'b0;
+            s2_v <= 1'b0;
+        end else begin
+            s1_v <= issue;
+            s2_v <= s1_v;
+        end
+        // datapath: no reset (the valid bits say what is there)
+        op_a    <= mul_a;
+        op_b    <= mul_b;
+        s1_kind <= kind;
+        s1_ax   <= ax_q;
+        prod_q  <= mul_exact;
+        s2_kind <= s1_kind;
+        s2_ax   <= s1_ax;
+    end
+    wire [W-1:0] acc_sum;  // vn + dv[ax] u[ax], then t + kd vn
+    /* verilator lint_off PINCONNECTEMPTY */
+    // the saturation flags are not needed: the saturated value is the result
+    fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(op_a), .b(op_b), .y(), .prod(mul_exact), .sat());
+    fx_round #(.W(W), .F(F)) u_round (.prod(prod_q), .y(mul_round), .sat());
+    fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len_q), .b(rest_q), .y(stretch), .sat());
+    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(use_kd ? t_q : vn_q), .b(mul_round), .y(acc_sum), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
     wire           sqrt_done, div_done, div_zero;
     wire [W-1:0]   root, quot;
-    wire [2*W-1:0] radicand = sq_q + mul_exact; // each square <= 2^(2W-2), so the sum fits 2W bits
+    wire [2*W-1:0] radicand = sq_q + prod_q; // each square <= 2^(2W-2), so the sum fits 2W bits
     // a divide starts when the root is there (lane x) and when a lane's quotient is (the next lane)
-    wire           div_start = (state_q == S_SQRT && sqrt_done) || (state_q == S_DIV && div_done && !ax_last);
-    wire [1:0]     num_ax    = state_q == S_SQRT ? 2'd0 : ax_q + 1'b1;
+    wire           div_start = (state_q == S_ROOT && sqrt_done) || (state_q == S_DIV && div_done && !ax_last);
+    wire [1:0]     num_ax    = state_q == S_ROOT ? 2'd0 : ax_q + 1'b1;
     wire [W-1:0]   d_num     = d_q[num_ax * W +: W];
     // |d.k|: two's complement magnitude, unsigned (|min| = 2^(W-1) fits W bits)
     wire [W-1:0]   num_k = d_num[W-1] ? -d_num : d_num;
-    wire [W-1:0]   den_k = state_q == S_SQRT ? root : len_q;
+    wire [W-1:0]   den_k = state_q == S_ROOT ? root : len_q;
     wire [W-1:0]   u_k   = d_ax[W-1] ? -quot : quot;  // quot <= max: no overflow
     /* verilator lint_off PINCONNECTEMPTY */
     // busy and saturation flags are not needed: the FSM counts on the fixed latency
     fx_sqrt #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (
-        .clk(clk), .reset(reset), .start(state_q == S_SQ && ax_last), .radicand(radicand),
+        .clk(clk), .reset(reset), .start(use_sq && s2_last), .radicand(radicand),
         .busy(), .done(sqrt_done), .result(root), .sat());
     fx_div #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
         .clk(clk), .reset(reset), .start(div_start), .num(num_k), .den(den_k),
@@ -153,16 +199,19 @@ module spring_force #(
         ax_d    = ax_q;
         done_d  = 1'b0;
         case (state_q)
-            S_IDLE: if (start) begin state_d = S_SQ; ax_d = 2'd0; end
-            S_SQ:   if (ax_last) state_d = S_SQRT; else ax_d = ax_q + 1'b1;
-            S_SQRT: if (sqrt_done) begin state_d = S_DIV; ax_d = 2'd0; end
-            S_DIV:  if (div_done) begin
-                        if (ax_last) begin state_d = S_VN; ax_d = 2'd0; end else ax_d = ax_q + 1'b1;
-                    end
-            S_VN:   if (ax_last) state_d = S_KS; else ax_d = ax_q + 1'b1;
-            S_KS:   state_d = S_KD;
-            S_KD:   begin state_d = S_F; ax_d = 2'd0; end
-            S_F:    if (ax_last) begin state_d = S_IDLE; done_d = 1'b1; end else ax_d = ax_q + 1'b1;
+            S_IDLE:  if (start) begin state_d = S_SQ; ax_d = 2'd0; end
+            S_SQ:    if (ax_last) state_d = S_ROOT; else ax_d = ax_q + 1'b1;
+            S_ROOT:  if (sqrt_done) begin state_d = S_DIV; ax_d = 2'd0; end
+            S_DIV:   if (div_done) begin
+                         if (ax_last) begin state_d = S_VN; ax_d = 2'd0; end else ax_d = ax_q + 1'b1;
+                     end
+            S_VN:    if (ax_last) state_d = S_KS; else ax_d = ax_q + 1'b1;
+            S_KS:    state_d = S_KDW;
+            S_KDW:   if (use_vn && s2_last) state_d = S_KD;
+            S_KD:    state_d = S_FW;
+            S_FW:    if (use_kd) begin state_d = S_F; ax_d = 2'd0; end
+            S_F:     if (ax_last) state_d = S_DRAIN; else ax_d = ax_q + 1'b1;
+            S_DRAIN: if (use_f && s2_last) begin state_d = S_IDLE; done_d = 1'b1; end
             default: state_d = S_IDLE;
         endcase
     end
@@ -178,8 +227,8 @@ module spring_force #(
             state_q <= state_d;
             ax_q    <= ax_d;
             done_q  <= done_d;
-            if (state_q == S_F) f[ax_q * W +: W] <= mul_round;
-            if (state_q == S_F && ax_last) valid <= !dz_q;
+            if (use_f) f[s2_ax * W +: W] <= mul_round;
+            if (use_f && s2_last) valid <= !dz_q;
         end
     end
 
@@ -192,15 +241,15 @@ module spring_force #(
             ks_q   <= ks;
             kd_q   <= kd;
         end
-        if (state_q == S_SQ) sq_q <= ax_q == 2'd0 ? mul_exact : radicand;
-        if (state_q == S_SQRT && sqrt_done) len_q <= root;
+        if (use_sq) sq_q <= s2_ax == 2'd0 ? prod_q : radicand;
+        if (state_q == S_ROOT && sqrt_done) len_q <= root;
         if (state_q == S_DIV && div_done) begin
             u_q[ax_q * W +: W] <= u_k;
             if (ax_q == 2'd0) dz_q <= div_zero;  // len = 0: no direction
         end
-        if (state_q == S_VN) vn_q <= ax_q == 2'd0 ? mul_round : acc_sum;
-        if (state_q == S_KS) t_q  <= mul_round;
-        if (state_q == S_KD) f_q  <= acc_sum;
+        if (use_vn) vn_q <= s2_ax == 2'd0 ? mul_round : acc_sum;
+        if (use_ks) t_q  <= mul_round;
+        if (use_kd) f_q  <= acc_sum;
     end
 
     assign busy = state_q != S_IDLE;

@@ -20,19 +20,24 @@
  *
  * Datapath: one W x W multiplier, shared by the DIM squares and the DIM products
  * (its exact 2W-bit product for the squares, its rounded result for the products),
- * one fx_sqrt and one fx_div; the axis counter `ax` picks the lane.
+ * one fx_sqrt and one fx_div; the axis counter `ax` picks the lane. The multiplier
+ * is pipelined: its operands are registered in the cycle an operation is issued and
+ * its exact product in the next; the cycle after, the product is used (added to the
+ * squares, or rounded and added to form T[ax]). So a product issued in cycle c is
+ * used in cycle c + 2, and no path holds more than the multiply or the rounding and
+ * the add.
  *
  * Timing, fixed whatever the data (the cycle model mirrors it). Counting the
- * cycle in which start is high as cycle 0: cycles 1 .. DIM square d.x, d.y (and
- * d.z), the last of them starts the square root; the root is there in cycle
- * SQRT_BITS+DIM+2 and starts the divider in that cycle; the quotient is there
- * DIV_BITS+2 cycles later; the next DIM cycles form T.x, T.y (and T.z); done is
- * high in cycle LATENCY = SQRT_BITS + DIV_BITS + 2 DIM + 5 (model/timing.c
- * hw_toward_latency), for one cycle. Each lane's result is new from the cycle after
- * its product (lane x from LATENCY - DIM + 1), the last lane's and valid from cycle
- * LATENCY: read them at done. They hold until the next operation forms them.
- * start is accepted only when idle or in the done cycle. Throughput: one operation
- * per LATENCY + 1 cycles.
+ * cycle in which start is high as cycle 0: cycles 1 .. DIM issue the squares of
+ * d.x, d.y (and d.z); the last is used in cycle DIM + 2, which starts the square
+ * root; the root is there in cycle SQRT_BITS+DIM+4 and starts the divider in that
+ * cycle; the quotient is there DIV_BITS+2 cycles later; the next DIM cycles issue
+ * the products d[ax] * r, the last used two cycles after; done is high in cycle
+ * LATENCY = SQRT_BITS + DIV_BITS + 2 DIM + 9 (model/timing.c hw_toward_latency), for
+ * one cycle. Each lane's result is new from the cycle after its product is used (lane
+ * x from LATENCY - DIM + 1), the last lane's and valid from cycle LATENCY: read them
+ * at done. They hold until the next operation forms them. start is accepted only
+ * when idle or in the done cycle. Throughput: one operation per LATENCY + 1 cycles.
  */
 module toward #(
     parameter integer W         = 32,    // word width, bits
@@ -57,16 +62,17 @@ module toward #(
     `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("toward: W must be 8..32 (W=%0d) in %m", W))
     `STRAND_CHECK(DIM_must_be_2_or_3, DIM == 2 || DIM == 3, ("toward: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
-    localparam [2:0] S_IDLE = 3'd0, // waiting for start
-                     S_SQ   = 3'd1, // square d[ax]; the last lane starts the root
-                     S_SQRT = 3'd2, // wait for the root, then start the divider
-                     S_DIV  = 3'd3, // wait for the quotient
-                     S_MUL  = 3'd4; // T[ax] = P[ax] + d[ax] * r (or d[ax] - d[ax] * r)
-    localparam integer  DIM_LAST_I = DIM - 1;
-    localparam [1:0]    DIM_LAST = DIM_LAST_I[1:0];
+    localparam [2:0] S_IDLE  = 3'd0, // waiting for start
+                     S_SQ    = 3'd1, // issue the square of d[ax]
+                     S_ROOT  = 3'd2, // the squares are used, the root runs; then start the divider
+                     S_DIV   = 3'd3, // wait for the quotient
+                     S_MUL   = 3'd4, // issue d[ax] * r
+                     S_DRAIN = 3'd5; // the products are used: T[ax] = P[ax] + d[ax] * r (or d[ax] - d[ax] * r)
+    localparam integer DIM_LAST_I = DIM - 1;
+    localparam [1:0]   DIM_LAST = DIM_LAST_I[1:0];
 
     reg [2:0]       state_q, state_d;
-    reg [1:0]       ax_q, ax_d;       // the lane of S_SQ and S_MUL
+    reg [1:0]       ax_q, ax_d;       // the lane an operation is issued for
     reg             done_q, done_d;
     reg [DIM*W-1:0] d_q, p_q;
     reg [W-1:0]     rest_q, r_q;
@@ -74,21 +80,52 @@ module toward #(
     reg             dz_q;
     reg [2*W-1:0]   sq_q;             // the squares so far
 
-    wire [W-1:0] d_ax = d_q[ax_q * W +: W];
-    wire [W-1:0] p_ax = p_q[ax_q * W +: W];
     wire         ax_last = ax_q == DIM_LAST;
+    wire [W-1:0] d_ax    = d_q[ax_q * W +: W];
 
-    // ---- the shared multiplier: d[ax]^2, then d[ax] * r ----
+    // ---- the multiplier pipeline: issue (operands registered), multiply (product
+    // registered), use; each stage carries its operation's kind and lane ----
+    wire         issue    = state_q == S_SQ || state_q == S_MUL;
+    reg  [W-1:0] op_a, op_b;          // stage 1: the operands
+    reg          s1_v, s1_sq;         //   valid, a square (else a product)
+    reg  [1:0]   s1_ax;
+    reg  [2*W-1:0] prod_q;            // stage 2: the exact product
+    reg          s2_v, s2_sq;
+    reg  [1:0]   s2_ax;
+    wire         s2_last  = s2_ax == DIM_LAST;
     wire [W-1:0]   mul_round;
     wire [2*W-1:0] mul_exact;
     /* verilator lint_off PINCONNECTEMPTY */
     // the multiplier's saturation flag is not used: saturation is the result itself
-    fx_mul #(.W(W), .F(F)) u_mul (.a(d_ax), .b(state_q == S_MUL ? r_q : d_ax), .y(mul_round), .prod(mul_exact), .sat());
+    fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(op_a), .b(op_b), .y(), .prod(mul_exact), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+    /* verilator lint_off PINCONNECTEMPTY */
+    fx_round #(.W(W), .F(F)) u_round (.prod(prod_q), .y(mul_round), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
-    // ---- the lanes: d = C - P at start; one adder forms T[ax] ----
+    always @(posedge clk) begin
+        if (reset) begin
+            s1_v <= 1'b0;
+            s2_v <= 1'b0;
+        end else begin
+            s1_v <= issue;
+            s2_v <= s1_v;
+        end
+        // datapath: no reset (the valid bits say what is there)
+        op_a   <= d_ax;
+        op_b   <= state_q == S_MUL ? r_q : d_ax;
+        s1_sq  <= state_q == S_SQ;
+        s1_ax  <= ax_q;
+        prod_q <= mul_exact;
+        s2_sq  <= s1_sq;
+        s2_ax  <= s1_ax;
+    end
+
+    // ---- the lanes: d = C - P at start; one adder forms T[ax] from a used product ----
     wire [DIM*W-1:0] d_new;
     wire [W-1:0]     t_sum;
+    wire [W-1:0]     d_s2 = d_q[s2_ax * W +: W];
+    wire [W-1:0]     p_s2 = p_q[s2_ax * W +: W];
     /* verilator lint_off PINCONNECTEMPTY */
     // saturation flags are not needed: the saturated value is the result
     genvar k;
@@ -97,12 +134,14 @@ module toward #(
             fx_add #(.W(W), .SUB(1)) u_d (.sub(1'b1), .a(c[k*W +: W]), .b(p[k*W +: W]), .y(d_new[k*W +: W]), .sat());
         end
     endgenerate
-    fx_add #(.W(W)) u_t (.sub(excess_q), .a(excess_q ? d_ax : p_ax), .b(mul_round), .y(t_sum), .sat());
+    fx_add #(.W(W)) u_t (.sub(excess_q), .a(excess_q ? d_s2 : p_s2), .b(mul_round), .y(t_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
-    wire           sqrt_start = state_q == S_SQ && ax_last;
-    wire [2*W-1:0] radicand   = sq_q + mul_exact; // each square <= 2^(2W-2), so a sum of three fits 2W bits
+    wire           use_sq     = s2_v && s2_sq;
+    wire           use_prod   = s2_v && !s2_sq;
+    wire           sqrt_start = use_sq && s2_last;
+    wire [2*W-1:0] radicand   = sq_q + prod_q; // each square <= 2^(2W-2), so a sum of three fits 2W bits
     wire           sqrt_done, div_done, div_zero;
     wire [W-1:0]   root, quot;
     /* verilator lint_off PINCONNECTEMPTY */
@@ -111,7 +150,7 @@ module toward #(
         .clk(clk), .reset(reset), .start(sqrt_start), .radicand(radicand),
         .busy(), .done(sqrt_done), .result(root), .sat());
     fx_div #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
-        .clk(clk), .reset(reset), .start(state_q == S_SQRT && sqrt_done), .num(rest_q), .den(root),
+        .clk(clk), .reset(reset), .start(state_q == S_ROOT && sqrt_done), .num(rest_q), .den(root),
         .busy(), .done(div_done), .result(quot), .div_by_zero(div_zero), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
@@ -121,11 +160,12 @@ module toward #(
         ax_d    = ax_q;
         done_d  = 1'b0;
         case (state_q)
-            S_IDLE: if (start) begin state_d = S_SQ; ax_d = 2'd0; end
-            S_SQ:   if (ax_last) state_d = S_SQRT; else ax_d = ax_q + 1'b1;
-            S_SQRT: if (sqrt_done) state_d = S_DIV;
-            S_DIV:  if (div_done) begin state_d = S_MUL; ax_d = 2'd0; end
-            S_MUL:  if (ax_last) begin state_d = S_IDLE; done_d = 1'b1; end else ax_d = ax_q + 1'b1;
+            S_IDLE:  if (start) begin state_d = S_SQ; ax_d = 2'd0; end
+            S_SQ:    if (ax_last) state_d = S_ROOT; else ax_d = ax_q + 1'b1;
+            S_ROOT:  if (sqrt_done) state_d = S_DIV;
+            S_DIV:   if (div_done) begin state_d = S_MUL; ax_d = 2'd0; end
+            S_MUL:   if (ax_last) state_d = S_DRAIN; else ax_d = ax_q + 1'b1;
+            S_DRAIN: if (use_prod && s2_last) begin state_d = S_IDLE; done_d = 1'b1; end
             default: state_d = S_IDLE;
         endcase
     end
@@ -141,8 +181,8 @@ module toward #(
             state_q <= state_d;
             ax_q    <= ax_d;
             done_q  <= done_d;
-            if (state_q == S_MUL) t[ax_q * W +: W] <= t_sum;
-            if (state_q == S_MUL && ax_last) valid <= !dz_q;
+            if (use_prod) t[s2_ax * W +: W] <= t_sum;
+            if (use_prod && s2_last) valid <= !dz_q;
         end
     end
 
@@ -154,7 +194,7 @@ module toward #(
             excess_q <= excess;
             rest_q   <= rest_len;
         end
-        if (state_q == S_SQ) sq_q <= ax_q == 2'd0 ? mul_exact : radicand;
+        if (use_sq) sq_q <= s2_ax == 2'd0 ? prod_q : radicand;
         if (state_q == S_DIV && div_done) begin
             r_q  <= quot;
             dz_q <= div_zero;

@@ -4,13 +4,15 @@
     faults.py NAME OUTDIR   copy rtl/ to OUTDIR and plant fault NAME there
     faults.py --list        the faults, one per line
 
-Planted faults never live in rtl/: each is a list of edits (file, text, replacement)
-applied to a copy. An edit whose text is not found exactly once stops with an error,
+Planted faults never live in rtl/: each is a list of edits (file, pattern, replacement)
+applied to a copy; the pattern is a regular expression (re.M) and the replacement may
+use its groups. An edit whose pattern does not match exactly once stops with an error,
 so a fault that no longer applies to the RTL fails loudly instead of testing nothing.
 The harness (--expect-fault NAME) predicts from the cycle model the cycle at which
 each must first show, and passes only if the first mismatch is there.
 """
 import os
+import re
 import shutil
 import sys
 
@@ -19,24 +21,24 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FAULTS = {
     # bit 0 of x flipped in the fifth pass write of unit 0 after reset: storage and the write-back lane
     "flip": [
-        ("node_unit.v", "    wire [DIM*W-1:0] wdata;\n",
+        ("node_unit.v", r"^    wire \[DIM\*W-1:0\] wdata;\n",
          "    wire [DIM*W-1:0] wdata;\n"
          "    reg [2:0] fault_writes;  // planted fault: pass writes since reset\n"
          "    always @(posedge clk)\n"
          "        if (reset) fault_writes <= 3'd0;\n"
          "        else if (pass_we && fault_writes != 3'd7) fault_writes <= fault_writes + 1'b1;\n"
          "    wire fault_flip = UNIT_ID == 0 && pass_we && fault_writes == 3'd4;\n"),
-        ("node_unit.v", ".touch(touch[k]), .hit(hit[k]), .wdata(wdata[k*W +: W]));",
-         ".touch(touch[k]), .hit(hit[k]), .wdata(wdata[k*W +: W]), .fault_flip(k == 0 && fault_flip));"),
-        ("node_lane.v", "    output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)\n",
-         "    output wire [W-1:0]  wdata,      // what this axis writes now (the write-back lane shows it)\n"
+        ("node_unit.v", r"\.wdata\(wdata\[k\*W \+: W\]\)\);",
+         ".wdata(wdata[k*W +: W]), .fault_flip(k == 0 && fault_flip));"),
+        ("node_lane.v", r"^    output wire \[W-1:0\]  wdata( +)// (.*)\n",
+         "    output wire [W-1:0]  wdata,\\1// \\2\n"
          "    input  wire          fault_flip  // planted fault: flip bit 0 of this write\n"),
-        ("node_lane.v", "    assign wdata      = running ? (ground_q ? g : grab_q ? mouse : n) : w_pos;\n",
-         "    assign wdata      = (running ? (ground_q ? g : grab_q ? mouse : n) : w_pos) ^ {{(W-1){1'b0}}, fault_flip};\n"),
+        ("node_lane.v", r"^    assign wdata( +)= (.*);\n",
+         "    assign wdata\\1= (\\2) ^ {{(W-1){1'b0}}, fault_flip};\n"),
     ],
     # FEC one cycle late
     "delay": [
-        ("strand_core.v", "            assign dbg = {wb_xyz, wb_idx_all, wb_valid_all, counter, nidx, uidx, fec, fv, phase};\n",
+        ("strand_core.v", r"^            assign dbg = \{wb_xyz, wb_idx_all, wb_valid_all, counter, nidx, uidx, fec, fv, phase\};\n",
          "            reg fec_late;  // planted fault\n"
          "            always @(posedge clk) fec_late <= reset ? 1'b0 : fec;\n"
          "            assign dbg = {wb_xyz, wb_idx_all, wb_valid_all, counter, nidx, uidx, fec_late, fv, phase};\n"),
@@ -52,15 +54,15 @@ def plant(name, out):
     os.makedirs(out, exist_ok=True)
     for f in os.listdir(rtl):
         shutil.copyfile(os.path.join(rtl, f), os.path.join(out, f))
-    for fname, text, repl in FAULTS[name]:
+    for fname, pattern, repl in FAULTS[name]:
         path = os.path.join(out, fname)
         with open(path) as fh:
             src = fh.read()
-        if src.count(text) != 1:
-            raise SystemExit(f"faults.py: fault '{name}' no longer applies: rtl/{fname} has {src.count(text)} "
-                             f"copies of {text.strip()[:60]!r}")
+        n = len(re.findall(pattern, src, re.M))
+        if n != 1:
+            raise SystemExit(f"faults.py: fault '{name}' no longer applies: rtl/{fname} has {n} matches of {pattern!r}")
         with open(path, "w") as fh:
-            fh.write(src.replace(text, repl))
+            fh.write(re.sub(pattern, repl, src, flags=re.M))
 
 
 def main():

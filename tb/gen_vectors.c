@@ -340,6 +340,7 @@ static void gen_div(int exhaustive)
 
 #ifdef GEN_DATAPATHS
 #include "../model/sim.h"
+#include "../model/hwgen.h"
 
 /*
  * rtl/toward.v and rtl/spring_force.v: the expected values come from the frame
@@ -694,6 +695,20 @@ int main(int argc, char **argv)
 #endif
     else die("unknown unit");
     if (fclose(out)) die("write failed");
+#ifdef GEN_DATAPATHS
+    if (datapath) { /* OUT.hex.latency: the datapath's latency, from the one formula (model/timing.c) */
+        hw_params hp;
+        memset(&hp, 0, sizeof hp);
+        hp.dim = 2;
+        hp.sqrt_bits = fmt.sqrt_bits;
+        hp.div_bits = fmt.div_bits;
+        char path[1024];
+        snprintf(path, sizeof path, "%s.latency", argv[argc - 1]);
+        FILE *lf = fopen(path, "w");
+        if (!lf || fprintf(lf, "%ld\n", !strcmp(unit, "toward") ? hw_toward_latency(&hp) : hw_spring_latency(&hp)) < 0 || fclose(lf))
+            die("cannot write the latency file");
+    }
+#endif
     printf("%ld\n", count);
     return 0;
 }

@@ -18,7 +18,7 @@
  *   - cycles 1 .. LATENCY-1: busy = 1, done = 0, and f_x, f_y, valid still hold the
  *     previous operation's values; f_x alone may already change in cycle LATENCY-1
  *     (spring_force.v writes it one cycle before f_y; callers read them at done);
- *   - cycle LATENCY = SQRT_BITS + 2 DIV_BITS + 15: done = 1, busy = 0, and the new
+ *   - cycle LATENCY (model/timing.c hw_spring_latency, +latency=): done = 1, busy = 0, and the new
  *     f_x, f_y, valid;
  *   - the next operation starts back to back in the done cycle, except after every
  *     4th vector (one idle cycle) and every 16th (three): done must have dropped,
@@ -38,7 +38,7 @@ module tb_spring_force;
     parameter integer DIV_BITS  = W - 1;   // quotient bits resolved under test
     parameter integer MAXN      = 1 << 14; // capacity of the vector memory
 
-    localparam integer LATENCY = SQRT_BITS + 2 * DIV_BITS + 15; // start to done, spring_force.v's header
+    integer          LATENCY;  // start to done: +latency=, from model/timing.c (tb/gen_vectors.c writes it)
     localparam integer FD = 4 * ((W + 3) / 4);                  // a W-bit field padded to hex digits
     localparam integer RW = 4 + 13 * FD;                        // record width
 
@@ -138,7 +138,8 @@ module tb_spring_force;
     initial begin
         limit = 1000;
         if (!$value$plusargs("name=%s", name)) name = "tb_spring_force";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
+            !$value$plusargs("latency=%d", LATENCY) || LATENCY < 4) begin
             $display("FAIL %0s: need +vectors=FILE and +n=1..%0d", name, MAXN);
             $fatal(1, "bad arguments");
         end

@@ -19,7 +19,7 @@
  *   - cycles 1 .. LATENCY-1: busy = 1, done = 0, and t_x, t_y, valid still hold the
  *     previous operation's values; t_x alone may already change in cycle LATENCY-1
  *     (toward.v writes it one cycle before t_y; callers read them at done);
- *   - cycle LATENCY = SQRT_BITS + DIV_BITS + 9: done = 1, busy = 0, and the new
+ *   - cycle LATENCY (model/timing.c hw_toward_latency, +latency=): done = 1, busy = 0, and the new
  *     t_x, t_y, valid;
  *   - the next operation starts back to back in the done cycle, except after every
  *     4th vector (one idle cycle) and every 16th (three): done must have dropped,
@@ -39,7 +39,7 @@ module tb_toward;
     parameter integer DIV_BITS  = W - 1;   // quotient bits resolved under test
     parameter integer MAXN      = 1 << 14; // capacity of the vector memory
 
-    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 9; // start to done, toward.v's header
+    integer          LATENCY;  // start to done: +latency=, from model/timing.c (tb/gen_vectors.c writes it)
     localparam integer FD = 4 * ((W + 3) / 4);             // a W-bit field padded to hex digits
     localparam integer RW = 4 + 7 * FD;                    // record width
 
@@ -131,7 +131,8 @@ module tb_toward;
     initial begin
         limit = 1000;
         if (!$value$plusargs("name=%s", name)) name = "tb_toward";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
+            !$value$plusargs("latency=%d", LATENCY) || LATENCY < 4) begin
             $display("FAIL %0s: need +vectors=FILE and +n=1..%0d", name, MAXN);
             $fatal(1, "bad arguments");
         end

@@ -41,7 +41,9 @@ UNITS_EXH_LANES ?= 16
 
 UNITS_NAMES := add mul avg sqrt div
 UNITS_RTL_DIR ?= $(UNITS_ROOT)/rtl
-UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v)
+UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v) $(UNITS_ROOT)/rtl/fx_round.v
+# what each unit's file needs beside itself (fx_mul rounds with fx_round)
+UNITS_DEPS_mul := rtl/fx_round.v
 UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
 UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
 
@@ -118,7 +120,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 	@mkdir -p $$(dir $$@)
 	$(UNITS_GEN) $(2) $(3) $(4) $(5) $(6) $$@ > $$@.n
 
-$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v $(addprefix $(UNITS_ROOT)/,$(UNITS_DEPS_$(2)))
 	@mkdir -p $$(dir $$@)
 	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$^
 
@@ -132,19 +134,25 @@ endef
 $(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
 
 # ---- the datapaths: toward, spring_force ----
-UNITS_DP_UNITS := fx_add fx_mul fx_sqrt fx_div
+UNITS_DP_UNITS := fx_add fx_mul fx_round fx_sqrt fx_div
 UNITS_GEN_DP   := $(UNITS_BUILD)/gen_vectors_dp
-UNITS_DP_MODEL := $(UNITS_MODEL) $(addprefix $(UNITS_ROOT)/model/,engine_fixed.c engine_body.h sim.h scene.c scene.h)
+UNITS_DP_MODEL := $(UNITS_MODEL) $(addprefix $(UNITS_ROOT)/model/,engine_fixed.c engine_body.h sim.h scene.c scene.h hwgen.h timing.h)
+# the parameter table's C header (the latency formulas take a build): the top Makefile makes it
+UNITS_PARAMS_H := $(BUILD)/gen/strand_params.h
+ifeq ($(GEN_HDRS),)
+$(UNITS_PARAMS_H): $(UNITS_ROOT)/scripts/gen_params.py
+	python3 $(UNITS_ROOT)/scripts/gen_params.py $(dir $@)
+endif
 UNITS_INIH      = $(shell pkg-config --cflags --libs inih 2>/dev/null || echo -linih)
 # the generator's name for each module's vectors
 UNITS_DP_GEN_toward       := toward
 UNITS_DP_GEN_spring_force := spring
 
 # The generator with the frame engine: the expected values come from its own code.
-$(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL)
+$(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/model/timing.c $(UNITS_PARAMS_H)
 	@mkdir -p $(dir $@)
-	$(UNITS_CC) $(UNITS_CFLAGS) -DGEN_DATAPATHS -o $@ $(UNITS_ROOT)/tb/gen_vectors.c \
-	    $(addprefix $(UNITS_ROOT)/model/,fixed.c engine_fixed.c scene.c) $(UNITS_INIH) -lm
+	$(UNITS_CC) $(UNITS_CFLAGS) -DGEN_DATAPATHS -I$(dir $(UNITS_PARAMS_H)) -o $@ $(UNITS_ROOT)/tb/gen_vectors.c \
+	    $(addprefix $(UNITS_ROOT)/model/,fixed.c engine_fixed.c scene.c timing.c) $(UNITS_INIH) -lm
 
 # One datapath test: vectors (cached), simulator (cached), and a run (always).
 # $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS
@@ -159,7 +167,7 @@ $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v 
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
-	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +latency=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.latency) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
 
 units-datapaths: units-run-$(1)
 endef
@@ -201,10 +209,10 @@ UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -G
 lint-units:
 	@set -e; cd $(UNITS_ROOT); \
 	$(foreach u,$(UNITS_NAMES),for p in $(UNITS_LINT_PARAMS_$(u)); do \
-	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl $$p rtl/fx_$(u).v; done; \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null rtl/fx_$(u).v 2>&1); \
+	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl $$p --top-module fx_$(u) rtl/fx_$(u).v $(UNITS_DEPS_$(u)); done; \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v 2>&1); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
 	$(foreach m,toward spring_force,for p in $(UNITS_LINT_PARAMS_DP); do \
@@ -213,15 +221,16 @@ lint-units:
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
 	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,spring_force}.v with the datapaths, are clean"
 
-# Planted fault: fx_mul with ties rounded up instead of to even, built from a copy
-# in the build tree (rtl/ is untouched). The exhaustive W=8 testbench must FAIL.
+# Planted fault: fx_mul with ties rounded up instead of to even (in fx_round, which
+# fx_mul rounds with), built from a copy in the build tree (rtl/ is untouched). The
+# exhaustive W=8 testbench must FAIL.
 UNITS_FAULT_DIR := $(UNITS_BUILD)/planted_fault
 test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex
 	@mkdir -p $(UNITS_FAULT_DIR)
-	@sed 's/round_up = half & (sticky | q\[0\])/round_up = half/' $(UNITS_ROOT)/rtl/fx_mul.v > $(UNITS_FAULT_DIR)/fx_mul.v
-	@! cmp -s $(UNITS_ROOT)/rtl/fx_mul.v $(UNITS_FAULT_DIR)/fx_mul.v || { echo "test-units-fault: could not plant the fault"; exit 1; }
+	@sed 's/round_up = half & (sticky | q\[0\])/round_up = half/' $(UNITS_ROOT)/rtl/fx_round.v > $(UNITS_FAULT_DIR)/fx_round.v
+	@! cmp -s $(UNITS_ROOT)/rtl/fx_round.v $(UNITS_FAULT_DIR)/fx_round.v || { echo "test-units-fault: could not plant the fault"; exit 1; }
 	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
-	    $(UNITS_ROOT)/tb/tb_fx_mul.v $(UNITS_FAULT_DIR)/fx_mul.v
+	    $(UNITS_ROOT)/tb/tb_fx_mul.v $(UNITS_ROOT)/rtl/fx_mul.v $(UNITS_FAULT_DIR)/fx_round.v
 	@if ( $(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/sim.vvp +vectors=$< +n=$$(cat $<.n) +name=fx_mul_w8_f4_planted_fault,$(UNITS_FAULT_DIR)/run.log,fx_mul_w8_f4_planted_fault,1) ); \
 	then echo "test-units-fault: the planted fault was NOT detected"; exit 1; \
 	else echo "test-units-fault: planted fault (ties rounded up in fx_mul) detected, as it must be"; fi

@@ -26,6 +26,10 @@ def main():
     ap.add_argument("--build", default=os.path.join(ROOT, os.environ.get("BUILD", "build")))
     a = ap.parse_args()
 
+    import logging
+    import warnings
+    warnings.filterwarnings("ignore", message="Python runners")  # the runner API is marked experimental
+    logging.disable(logging.INFO)                                 # its progress lines; the logs keep all
     from cocotb.runner import get_runner  # noqa: E402 (from the venv)
 
     name = os.path.basename(a.scene).replace(".scene", "")
