@@ -9,6 +9,7 @@ status is 1 if any test failed. Needs the project's .venv (cocotb, cocotbext-axi
 build/strand, build/gen (make model).
 """
 import argparse
+import contextlib
 import glob
 import os
 import subprocess
@@ -44,19 +45,24 @@ def main():
         return 1
     rtl = sorted(glob.glob(os.path.join(ROOT, "rtl", "*.v")))
     runner = get_runner("icarus")
-    runner.build(verilog_sources=[os.path.join(ROOT, "tb", "axil_top.v")] + rtl, hdl_toplevel="axil_top",
-                 includes=[export, gen, os.path.join(ROOT, "rtl")], parameters={"DEBUG": 0},
-                 build_dir=os.path.join(out, "sim"), build_args=["-Wall"], always=True, log_file=os.path.join(out, "build.log"))
+    chatter = open(os.path.join(out, "runner.log"), "w")  # the runner prints each command it runs
+    with contextlib.redirect_stdout(chatter):
+        runner.build(verilog_sources=[os.path.join(ROOT, "tb", "axil_top.v")] + rtl, hdl_toplevel="axil_top",
+                     includes=[export, gen, os.path.join(ROOT, "rtl")], parameters={"DEBUG": 0},
+                     build_dir=os.path.join(out, "sim"), build_args=["-Wall"], always=True,
+                     log_file=os.path.join(out, "build.log"))
     results = os.path.join(out, "results.xml")
     if os.path.exists(results):
         os.remove(results)
     try:
-        runner.test(hdl_toplevel="axil_top", test_module="test_axil", test_dir=os.path.join(ROOT, "tb", "cocotb"),
-                    build_dir=os.path.join(out, "sim"), results_xml=results,
-                    extra_env={"STRAND_AXIL_DIR": export, "STRAND_GEN": gen, "STRAND_AXIL_FRAMES": str(a.frames)},
-                    log_file=os.path.join(out, "test.log"))
+        with contextlib.redirect_stdout(chatter):
+            runner.test(hdl_toplevel="axil_top", test_module="test_axil", test_dir=os.path.join(ROOT, "tb", "cocotb"),
+                        build_dir=os.path.join(out, "sim"), results_xml=results,
+                        extra_env={"STRAND_AXIL_DIR": export, "STRAND_GEN": gen, "STRAND_AXIL_FRAMES": str(a.frames)},
+                        log_file=os.path.join(out, "test.log"))
     except SystemExit:
         pass
+    chatter.close()
     passed = failed = 0
     if os.path.exists(results):
         for case in ET.parse(results).getroot().iter("testcase"):
