@@ -134,7 +134,8 @@ BODY_RUNTIME = {
 def doc_body(gen_dir):
     """The body of docs/resources.md: synth.py's 4x5 build (the table's defaults)."""
     c = synth.table_defaults(gen_dir)
-    m, k = synth.CONFIG_MK[synth.CHECK_CONFIG]
+    c.update(synth.BUILD_MAP[synth.CHECK_CONFIG][0])
+    m, k = c["M"], c["K"]
     build = {"W": c["W"], "F": c["F"], "M": m, "K": k, "SQRT_BITS": c["SQRT_BITS"], "DIV_BITS": c["DIV_BITS"],
              "ITER": c["ITER"], "SUBSTEPS": c["SUBSTEPS"]}
     return f"{synth.CHECK_CONFIG} chain", build

