@@ -173,7 +173,7 @@ static void reset_all(cyc_model *c)
     }
     c->running = c->done = false;
     c->vidx = 0;
-    c->pass_b = false;
+    c->pass_b = c->pass_c = false;
     for (int u = 0; u < c->hp.m; u++) {
         c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
         c->wb_valid[u] = false;
@@ -371,22 +371,22 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             lane_write(c, written, node / k, node % k, node);
         }
     }
-    /* A pass's stage B (node_unit): node idx_b of every unit is written. Its stage A read
-       it two edges ago; nothing else writes a node during a pass, so computing it here, from
+    /* A pass's stage C (node_unit): node idx_c of every unit is written. Its stage A read
+       it three edges ago; nothing else writes a node during a pass, so computing it here, from
        the storage as it is now, is the same. */
-    if (c->pass_b && c->ground_b) {
+    if (c->pass_c && c->ground_c) {
         for (int u = 0; u < m; u++) {
-            int node = u * k + c->idx_b;
-            if (sim_fx_ground_node(&c->s, node)) lane_write(c, written, u, c->idx_b, node);
+            int node = u * k + c->idx_c;
+            if (sim_fx_ground_node(&c->s, node)) lane_write(c, written, u, c->idx_c, node);
         }
-    } else if (c->pass_b) {
+    } else if (c->pass_c) {
         for (int u = 0; u < m; u++) {
-            int node = u * k + c->idx_b;
+            int node = u * k + c->idx_c;
             for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;
             if (sim_fx_verlet_node(&c->s, node)) {
                 if (hp->en_mouse && !hp->grab) sim_fx_mouse_node(&c->s, node);
-                lane_write(c, written, u, c->idx_b, node);
+                lane_write(c, written, u, c->idx_c, node);
             }
             /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
             for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
@@ -454,9 +454,11 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->sq_state = next;
     }
 
-    /* node_unit pass FSM: stage A (running, vidx), then stage B (pass_b, idx_b). */
+    /* node_unit pass FSM: stage A (running, vidx), stage B (pass_b, idx_b), stage C (pass_c, idx_c). */
     const bool pass_b_next = c->running, ground_b_next = c->ground_pass;
     const int idx_b_next = c->vidx;
+    const bool pass_c_next = c->pass_b, ground_c_next = c->ground_b;
+    const int idx_c_next = c->idx_b;
     if (verlet_start || ground_start) {
         c->running = true;
         c->done = false;
@@ -467,12 +469,17 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             if (c->vidx == k - 1) c->running = false;
             c->vidx = (c->vidx + 1) & ((1 << hp->iw) - 1);
         }
-        if (c->pass_b && c->idx_b == k - 1) c->done = true; /* the last node is written */
+        if (c->pass_c && c->idx_c == k - 1) c->done = true; /* the last node is written */
     }
     c->pass_b = pass_b_next;
     if (pass_b_next) {
         c->idx_b = idx_b_next;
         c->ground_b = ground_b_next;
+    }
+    c->pass_c = pass_c_next;
+    if (pass_c_next) {
+        c->idx_c = idx_c_next;
+        c->ground_c = ground_c_next;
     }
 
     /* frame_ctrl's FSM. */

@@ -87,8 +87,10 @@ typedef struct {
     bool running, done;
     bool ground_pass; /* the pass under way is the ground pass */
     int vidx;         /* stage A: the node whose data arrive */
-    bool pass_b, ground_b; /* stage B: a node of a pass (of the ground pass) is written */
+    bool pass_b, ground_b; /* stage B: a node of a pass (of the ground pass) */
     int idx_b;
+    bool pass_c, ground_c; /* stage C: it is written */
+    int idx_c;
     fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS];
     bool wb_valid[CYC_MAX_UNITS];
     uint32_t wb_idx[CYC_MAX_UNITS];

@@ -6,17 +6,18 @@
 long hw_toward_latency(const hw_params *hp)
 {
     /* toward.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline), the
-       root (SQRT_BITS + 2), the divide (DIV_BITS + 2), DIM products issued, the last used 2
-       cycles later, done */
-    return hp->sqrt_bits + hp->div_bits + 2L * hp->dim + 9;
+       root (SQRT_BITS + 2), the divide (DIV_BITS + 2), DIM products issued, the last used 3
+       cycles later (rounded in between), done */
+    return hp->sqrt_bits + hp->div_bits + 2L * hp->dim + 10;
 }
 
 long hw_spring_latency(const hw_params *hp)
 {
     /* spring_force.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline),
-       the root, DIM divides, DIM vn products and ks (len - rest), a wait for vn, kd vn, two waits
-       for f, DIM F.k, the last used 2 cycles later, done */
-    return hp->sqrt_bits + (long)hp->dim * hp->div_bits + 5L * hp->dim + 12;
+       the root, DIM divides, DIM vn products and ks (len - rest), two waits for vn (products are
+       used 3 cycles after their issue), kd vn, three waits for f, DIM F.k, the last used 3 cycles
+       later, done */
+    return hp->sqrt_bits + (long)hp->dim * hp->div_bits + 5L * hp->dim + 15;
 }
 
 static long node_count(const hw_params *hp) { return (long)hp->m * hp->k; }
@@ -36,12 +37,12 @@ long hw_spring_pass(const hw_params *hp)
 }
 
 /* The terms of a substep and of a frame. */
-/* node_unit: K nodes through a two-stage pass (the last written 2 cycles after its read), FV;
+/* node_unit: K nodes through a three-stage pass (the last written 3 cycles after its read), FV;
    with constraints the sequencer starts the cycle after */
-static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 3 : 2); }
+static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 4 : 3); }
 static long constrain_phase(const hw_params *hp) { return hp->en_constraints ? hp->iter * hw_constraint_pass(hp) : 0; }
 static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
-static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 2 : 0; }
+static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 3 : 0; }
 static long grab_phase(const hw_params *hp) { return hp->grab && hp->en_mouse ? node_count(hp) + 1 : 0; }
 
 long hw_cycles_per_frame(const hw_params *hp)
@@ -53,11 +54,11 @@ long hw_cycles_per_frame(const hw_params *hp)
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
     return snprintf(out, (size_t)len,
-                    "toward latency LT = SQRT_BITS + DIV_BITS + 2 DIM + 9 = %ld\n"
-                    "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 12 = %ld\n"
+                    "toward latency LT = SQRT_BITS + DIV_BITS + 2 DIM + 10 = %ld\n"
+                    "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
                     "constraint pass = %s = %ld\n"
                     "spring pass = 1 + links (LS + 5) = %ld\n"
-                    "substep = Verlet (K + 3 with constraints, else K + 2) + ITER passes [+ spring pass] [+ ground K + 2] = %ld\n"
+                    "substep = Verlet (K + 4 with constraints, else K + 3) + ITER passes [+ spring pass] [+ ground K + 3] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hw_toward_latency(hp), hw_spring_latency(hp),
                     hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)", hw_constraint_pass(hp),

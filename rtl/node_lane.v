@@ -28,12 +28,13 @@
  * else the external data (init walk, NODE loads, the sequencer), a pinned node's
  * previous position = its position (it starts at rest).
  *
- * Timing: a pass is a two-stage pipeline. Stage A, the cycle port A's data arrive:
- * the Verlet step (or the ground test) of that node, registered. Stage B, the next
- * cycle: the mouse test and impulse on the registered result, and the write. So
- * no path holds both the Verlet step's adders and the mouse's; a node is written two
- * cycles after its address. Storage reads are synchronous (address now, data next
- * cycle), read before write.
+ * Timing: a pass is a three-stage pipeline, each stage registered. Stage A, the cycle
+ * port A's data arrive: the velocity v = q - qp (and the ground test). Stage B: the
+ * rest of the Verlet step (damping, x + v, gravity, the spring force), or the ground
+ * pass's bounce and friction. Stage C: the mouse test and impulse, and the write. So
+ * no path holds more than two of the step's adders; a node is written three cycles
+ * after its address. Storage reads are synchronous (address now, data next cycle),
+ * read before write.
  */
 module node_lane #(
 `include "strand_params.vh"
@@ -49,16 +50,17 @@ module node_lane #(
     input  wire          we,         // write pos (and prev when wprev) at widx
     input  wire          wprev,
     input  wire [IW-1:0] widx,
-    input  wire          acc_clear,  // the Verlet pass consumes the force of node vidx, the init walk and loads clear it
+    input  wire          acc_clear,  // the Verlet pass consumes the force of a node, the init walk and loads clear it
     input  wire [IW-1:0] acc_clear_idx,
     input  wire          acc_we,     // the spring pass writes the force of node widx
     input  wire [W-1:0]  acc_w,
 
-    // how the write is formed
+    // the pass pipeline (node_unit's stage valids) and how the write is formed
     input  wire          stage_a,    // a pass's node is in stage A (its data arrive now)
-    input  wire          pass_b,     // a pass's node is in stage B: write its result
-    input  wire          ground_b,   //   the ground pass
-    input  wire          grab_b,     //   the node is the grabbed one (GRAB)
+    input  wire          stage_b,    //   in stage B
+    input  wire          pass_c,     //   in stage C: write its result
+    input  wire          ground_c,   //   the ground pass
+    input  wire          grab_c,     //   the node is the grabbed one (GRAB)
     input  wire          w_pin,      // an external write to a pinned node: at rest
     input  wire [W-1:0]  w_pos,      // external write data
     input  wire [W-1:0]  w_prev,
@@ -79,27 +81,43 @@ module node_lane #(
     output wire [W-1:0]  qp,
     output wire [W-1:0]  qa,
     output wire [W-1:0]  b_data,     // port B: position (node_unit masks unwritten nodes)
-    output wire          touch,      // stage B: |mouse - n| < box on this axis
-    output wire          hit,        // stage B, AXIS = GROUND_AXIS: past the boundary
+    output wire          touch,      // stage C: |mouse - n| < box on this axis
+    output wire          hit,        // stage C, AXIS = GROUND_AXIS: past the boundary
     output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)
 );
 
-    // ---- storage ----
-    wire [W-1:0] n;          // stage A: the Verlet result
-    wire [W-1:0] g, gp;      // stage A: the ground pass's result
-    wire         hit_a;
-    reg  [W-1:0] n_b, q_b;   // stage B: the Verlet result, the old position
-    wire [W-1:0] g_b, gp_b;  // stage B: the ground pass's result
-    wire [W-1:0] np;         // stage B: the previous position after the mouse impulse
-    wire [W-1:0] wprev_data;
-    always @(posedge clk) begin  // datapath registers: pass_b says when they hold a node
+    // ---- the pipeline registers (datapath: the stage valids say when they hold a node) ----
+    wire [W-1:0] v;                  // stage A: q - qp
+    wire         hit_a;              // stage A: past the ground boundary
+    reg  [W-1:0] q_b, qp_b, qa_b, v_b;
+    reg          hit_b;
+    wire [W-1:0] n;                  // stage B: the Verlet result
+    wire [W-1:0] g, gp;              // stage B: the ground pass's result
+    reg  [W-1:0] n_c, q_c, g_c, gp_c;
+    reg          hit_c;
+    wire [W-1:0] np;                 // stage C: the previous position after the mouse impulse
+    always @(posedge clk) begin
         if (stage_a) begin
-            n_b <= n;
-            q_b <= q;
+            q_b   <= q;
+            qp_b  <= qp;
+            qa_b  <= qa;
+            v_b   <= v;
+            hit_b <= hit_a;
+        end
+        if (stage_b) begin
+            n_c   <= n;
+            q_c   <= q_b;
+            g_c   <= g;
+            gp_c  <= gp;
+            hit_c <= hit_b;
         end
     end
-    assign wdata      = pass_b ? (EN_GROUND && ground_b ? g_b : GRAB && grab_b ? mouse : n_b) : w_pos;
-    assign wprev_data = pass_b ? (EN_GROUND && ground_b ? gp_b : np) : w_pin ? w_pos : w_prev;
+    assign hit = hit_c;
+
+    // ---- storage ----
+    wire [W-1:0] wprev_data;
+    assign wdata      = pass_c ? (EN_GROUND && ground_c ? g_c : GRAB && grab_c ? mouse : n_c) : w_pos;
+    assign wprev_data = pass_c ? (EN_GROUND && ground_c ? gp_c : np) : w_pin ? w_pos : w_prev;
 
     strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pos (
         .clk(clk), .we(we), .waddr(widx), .wdata(wdata),
@@ -111,24 +129,24 @@ module node_lane #(
         .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
         .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
-    /* verilator lint_on PINCONNECTEMPTY */
 
-    // ---- the Verlet step ----
-    wire [W-1:0] v, v_d, n1, n_g;
-    /* verilator lint_off PINCONNECTEMPTY */
+    // ---- stage A: the velocity ----
     // saturation flags are not needed: the saturated value is the result
     fx_add #(.W(W), .SUB(1)) u_v (.sub(1'b1), .a(q), .b(qp), .y(v), .sat());
+
+    // ---- stage B: the rest of the Verlet step ----
+    wire [W-1:0] v_d, n1, n_g;
     generate
         if (EN_DAMPING) begin : g_damping
             wire [W-1:0] dv;
-            fx_mul #(.W(W), .F(F)) u_dv (.a(v), .b(damping), .y(dv), .sat(), .prod());
-            fx_add #(.W(W), .SUB(1)) u_vd (.sub(1'b1), .a(v), .b(dv), .y(v_d), .sat());
+            fx_mul #(.W(W), .F(F)) u_dv (.a(v_b), .b(damping), .y(dv), .sat(), .prod());
+            fx_add #(.W(W), .SUB(1)) u_vd (.sub(1'b1), .a(v_b), .b(dv), .y(v_d), .sat());
         end else begin : g_no_damping
-            assign v_d = v;
+            assign v_d = v_b;
             wire unused_damping = &{1'b0, damping};
         end
     endgenerate
-    fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q), .b(v_d), .y(n1), .sat());
+    fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q_b), .b(v_d), .y(n1), .sat());
     generate
         if (EN_GRAVITY) begin : g_gravity
             fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
@@ -138,7 +156,7 @@ module node_lane #(
         end
     endgenerate
 
-    // ---- the spring force of this substep (a spring pass gathered it) ----
+    // ---- the spring force of this substep (a spring pass gathered it), added in stage B ----
     // The Verlet pass consumes each node's force and clears it (pinned nodes too), so the
     // next spring pass starts from 0, as model/engine_body.h force_pass() does; the init
     // walk and NODE loads clear it too (the memory is not reset).
@@ -150,74 +168,57 @@ module node_lane #(
                 .wdata(acc_clear ? {W{1'b0}} : acc_w),
                 .re_a(a_re), .raddr_a(a_addr), .rdata_a(qa),
                 .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
-            fx_add #(.W(W), .SUB(0)) u_f (.sub(1'b0), .a(n_g), .b(qa), .y(n), .sat());
+            fx_add #(.W(W), .SUB(0)) u_f (.sub(1'b0), .a(n_g), .b(qa_b), .y(n), .sat());
         end else begin : g_no_springs
             assign qa = {W{1'b0}};
             assign n  = n_g;
-            wire unused_springs = &{1'b0, acc_clear, acc_clear_idx, acc_we, acc_w};
+            wire unused_springs = &{1'b0, acc_clear, acc_clear_idx, acc_we, acc_w, qa_b};
         end
     endgenerate
 
-    // ---- stage B, the mouse: this axis's in-touch test, and the impulse (x only) ----
+    // ---- stage C, the mouse: this axis's in-touch test, and the impulse (x only) ----
     generate
         if (EN_MOUSE && !GRAB) begin : g_mouse
             // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, both exact in W+1 bits
             // (a saturated difference is never inside the box): no saturating subtract,
             // no negation per node
-            wire [W:0] dd = {mouse[W-1], mouse} - {n_b[W-1], n_b};
+            wire [W:0] dd = {mouse[W-1], mouse} - {n_c[W-1], n_c};
             assign touch = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
             if (AXIS == 0) begin : g_impulse
                 // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left of x)
                 wire [W-1:0] pushed;
-                fx_add #(.W(W)) u_push (.sub(!($signed(mouse) < $signed(q_b))), .a(n_b), .b(impulse), .y(pushed), .sat());
-                assign np = in_touch ? pushed : q_b;
+                fx_add #(.W(W)) u_push (.sub(!($signed(mouse) < $signed(q_c))), .a(n_c), .b(impulse), .y(pushed), .sat());
+                assign np = in_touch ? pushed : q_c;
             end else begin : g_no_impulse
-                assign np = q_b;
+                assign np = q_c;
                 wire unused_impulse = &{1'b0, impulse, in_touch};
             end
         end else begin : g_no_mouse
             assign touch = 1'b1;
-            assign np = q_b;
+            assign np = q_c;
             wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch};
         end
     endgenerate
 
-    // ---- the ground pass: collision with friction (stage A, registered for stage B) ----
+    // ---- the ground pass: collision with friction (the test in stage A, the rest in B) ----
     generate
         if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
             assign hit_a = GROUND_ABOVE ? $signed(q) < $signed(ground) : $signed(ground) < $signed(q);
-            fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v), .y(gp), .sat());
+            fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v_b), .y(gp), .sat());
             assign g = ground;
-            wire unused_friction = &{1'b0, friction};
+            wire unused_friction = &{1'b0, friction, qp_b};
         end else if (EN_GROUND) begin : g_tangent
             wire [W-1:0] slip;
-            fx_mul #(.W(W), .F(F)) u_slip (.a(v), .b(friction), .y(slip), .sat(), .prod());
-            fx_add #(.W(W), .SUB(0)) u_fp (.sub(1'b0), .a(qp), .b(slip), .y(gp), .sat());
-            assign g     = q;
+            fx_mul #(.W(W), .F(F)) u_slip (.a(v_b), .b(friction), .y(slip), .sat(), .prod());
+            fx_add #(.W(W), .SUB(0)) u_fp (.sub(1'b0), .a(qp_b), .b(slip), .y(gp), .sat());
+            assign g     = q_b;
             assign hit_a = 1'b0;
             wire unused_ground = &{1'b0, ground};
         end else begin : g_no_ground
-            assign g     = q;
-            assign gp    = qp;
+            assign g     = q_b;
+            assign gp    = qp_b;
             assign hit_a = 1'b0;
-            wire unused_ground = &{1'b0, ground, friction, ground_b, g, gp, hit_a};
-        end
-        if (EN_GROUND) begin : g_ground_b
-            reg [W-1:0] g_q, gp_q;
-            reg         hit_q;
-            always @(posedge clk)
-                if (stage_a) begin
-                    g_q   <= g;
-                    gp_q  <= gp;
-                    hit_q <= hit_a;
-                end
-            assign g_b  = g_q;
-            assign gp_b = gp_q;
-            assign hit  = hit_q;
-        end else begin : g_no_ground_b
-            assign g_b  = {W{1'b0}};
-            assign gp_b = {W{1'b0}};
-            assign hit  = 1'b0;
+            wire unused_ground = &{1'b0, ground, friction, ground_c, g_c, gp_c, hit_c};
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */

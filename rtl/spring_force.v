@@ -25,18 +25,19 @@
  * exact 2W-bit product for the squares), one fx_sqrt, one fx_div used for each u.k;
  * the axis counter `ax` picks the lane. The multiplier is pipelined as in toward.v:
  * operands registered in the cycle an operation is issued, the exact product in the
- * next, used (rounded, and added where the formula adds) in the cycle after. An
- * operation that needs an earlier one's result waits for it: ks (len - rest) is
- * issued after the vn products, kd vn when vn is complete, the F.k when f is.
+ * next (a square is used in the cycle after), the rounded product in the cycle after
+ * that, used one cycle later (added where the formula adds). An operation that needs
+ * an earlier one's result waits for it: ks (len - rest) is issued after the vn
+ * products, kd vn when vn is complete, the F.k when f is.
  *
  * Timing, fixed whatever the data (the cycle model mirrors it). Counting the cycle
  * in which start is high as cycle 0: cycles 1 .. DIM issue the squares, the last is
  * used in cycle DIM + 2 and starts the root; the root is there in cycle
  * SQRT_BITS+DIM+4 and starts the divider for u.x; each u.k is there DIV_BITS+2
  * cycles after its divide started and starts the next; then DIM cycles issue the vn
- * products, one ks (len - rest), one waits for vn, one issues kd vn, two wait for f,
- * DIM issue the F.k, and the last is used two cycles later; done is high in cycle
- * LATENCY = SQRT_BITS + DIM DIV_BITS + 5 DIM + 12 (model/timing.c hw_spring_latency),
+ * products, one ks (len - rest), two wait for vn, one issues kd vn, three wait for
+ * f, DIM issue the F.k, and the last is used three cycles later; done is high in cycle
+ * LATENCY = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 (model/timing.c hw_spring_latency),
  * for one cycle. Each lane's force is new from the cycle after its product is used,
  * the last lane's and valid from cycle LATENCY: read them at done. They hold until
  * the next operation forms them. start is accepted only when idle or in the done cycle.
@@ -136,15 +137,20 @@ module spring_force #(
     reg            s1_v, s2_v;
     reg  [2:0]     s1_kind, s2_kind;
     reg  [1:0]     s1_ax, s2_ax;
-    reg  [2*W-1:0] prod_q;
+    reg  [2*W-1:0] prod_q;    // stage 2: the exact product (a square is used here)
+    reg  [W-1:0]   round_q;   // stage 3: the rounded product (every other product is used here)
+    reg            s3_v;
+    reg  [2:0]     s3_kind;
+    reg  [1:0]     s3_ax;
     wire [W-1:0]   mul_round;
     wire [2*W-1:0] mul_exact;
     wire           s2_last = s2_ax == DIM_LAST;
+    wire           s3_last = s3_ax == DIM_LAST;
     wire           use_sq  = s2_v && s2_kind == K_SQ;
-    wire           use_vn  = s2_v && s2_kind == K_VN;
-    wire           use_ks  = s2_v && s2_kind == K_KS;
-    wire           use_kd  = s2_v && s2_kind == K_KD;
-    wire           use_f   = s2_v && s2_kind == K_F;
+    wire           use_vn  = s3_v && s3_kind == K_VN;
+    wire           use_ks  = s3_v && s3_kind == K_KS;
+    wire           use_kd  = s3_v && s3_kind == K_KD;
+    wire           use_f   = s3_v && s3_kind == K_F;
     always @(posedge clk) begin
         if (reset) begin
             s1_v <= 1'b0;
@@ -152,6 +158,7 @@ module spring_force #(
         end else begin
             s1_v <= issue;
             s2_v <= s1_v;
+            s3_v <= s2_v && s2_kind != K_SQ;
         end
         // datapath: no reset (the valid bits say what is there)
         op_a    <= mul_a;
@@ -161,6 +168,9 @@ module spring_force #(
         prod_q  <= mul_exact;
         s2_kind <= s1_kind;
         s2_ax   <= s1_ax;
+        round_q <= mul_round;
+        s3_kind <= s2_kind;
+        s3_ax   <= s2_ax;
     end
     wire [W-1:0] acc_sum;  // vn + dv[ax] u[ax], then t + kd vn
     /* verilator lint_off PINCONNECTEMPTY */
@@ -168,7 +178,7 @@ module spring_force #(
     fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(op_a), .b(op_b), .y(), .prod(mul_exact), .sat());
     fx_round #(.W(W), .F(F)) u_round (.prod(prod_q), .y(mul_round), .sat());
     fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len_q), .b(rest_q), .y(stretch), .sat());
-    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(use_kd ? t_q : vn_q), .b(mul_round), .y(acc_sum), .sat());
+    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(use_kd ? t_q : vn_q), .b(round_q), .y(acc_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
@@ -207,11 +217,11 @@ module spring_force #(
                      end
             S_VN:    if (ax_last) state_d = S_KS; else ax_d = ax_q + 1'b1;
             S_KS:    state_d = S_KDW;
-            S_KDW:   if (use_vn && s2_last) state_d = S_KD;
+            S_KDW:   if (use_vn && s3_last) state_d = S_KD;
             S_KD:    state_d = S_FW;
             S_FW:    if (use_kd) begin state_d = S_F; ax_d = 2'd0; end
             S_F:     if (ax_last) state_d = S_DRAIN; else ax_d = ax_q + 1'b1;
-            S_DRAIN: if (use_f && s2_last) begin state_d = S_IDLE; done_d = 1'b1; end
+            S_DRAIN: if (use_f && s3_last) begin state_d = S_IDLE; done_d = 1'b1; end
             default: state_d = S_IDLE;
         endcase
     end
@@ -227,8 +237,8 @@ module spring_force #(
             state_q <= state_d;
             ax_q    <= ax_d;
             done_q  <= done_d;
-            if (use_f) f[s2_ax * W +: W] <= mul_round;
-            if (use_f && s2_last) valid <= !dz_q;
+            if (use_f) f[s3_ax * W +: W] <= round_q;
+            if (use_f && s3_last) valid <= !dz_q;
         end
     end
 
@@ -247,8 +257,8 @@ module spring_force #(
             u_q[ax_q * W +: W] <= u_k;
             if (ax_q == 2'd0) dz_q <= div_zero;  // len = 0: no direction
         end
-        if (use_vn) vn_q <= s2_ax == 2'd0 ? mul_round : acc_sum;
-        if (use_ks) t_q  <= mul_round;
+        if (use_vn) vn_q <= s3_ax == 2'd0 ? round_q : acc_sum;
+        if (use_ks) t_q  <= round_q;
         if (use_kd) f_q  <= acc_sum;
     end
 

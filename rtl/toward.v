@@ -21,19 +21,19 @@
  * Datapath: one W x W multiplier, shared by the DIM squares and the DIM products
  * (its exact 2W-bit product for the squares, its rounded result for the products),
  * one fx_sqrt and one fx_div; the axis counter `ax` picks the lane. The multiplier
- * is pipelined: its operands are registered in the cycle an operation is issued and
- * its exact product in the next; the cycle after, the product is used (added to the
- * squares, or rounded and added to form T[ax]). So a product issued in cycle c is
- * used in cycle c + 2, and no path holds more than the multiply or the rounding and
- * the add.
+ * is pipelined: its operands are registered in the cycle an operation is issued, its
+ * exact product in the next; a square is used (added to the squares) the cycle after;
+ * a product is rounded (fx_round) and registered then, and used (added to form T[ax])
+ * one cycle later. So a square issued in cycle c is used in cycle c + 2, a product in
+ * cycle c + 3, and no path holds more than the multiply, the rounding or one add.
  *
  * Timing, fixed whatever the data (the cycle model mirrors it). Counting the
  * cycle in which start is high as cycle 0: cycles 1 .. DIM issue the squares of
  * d.x, d.y (and d.z); the last is used in cycle DIM + 2, which starts the square
  * root; the root is there in cycle SQRT_BITS+DIM+4 and starts the divider in that
  * cycle; the quotient is there DIV_BITS+2 cycles later; the next DIM cycles issue
- * the products d[ax] * r, the last used two cycles after; done is high in cycle
- * LATENCY = SQRT_BITS + DIV_BITS + 2 DIM + 9 (model/timing.c hw_toward_latency), for
+ * the products d[ax] * r, the last used three cycles after; done is high in cycle
+ * LATENCY = SQRT_BITS + DIV_BITS + 2 DIM + 10 (model/timing.c hw_toward_latency), for
  * one cycle. Each lane's result is new from the cycle after its product is used (lane
  * x from LATENCY - DIM + 1), the last lane's and valid from cycle LATENCY: read them
  * at done. They hold until the next operation forms them. start is accepted only
@@ -89,10 +89,14 @@ module toward #(
     reg  [W-1:0] op_a, op_b;          // stage 1: the operands
     reg          s1_v, s1_sq;         //   valid, a square (else a product)
     reg  [1:0]   s1_ax;
-    reg  [2*W-1:0] prod_q;            // stage 2: the exact product
+    reg  [2*W-1:0] prod_q;            // stage 2: the exact product (a square is used here)
     reg          s2_v, s2_sq;
     reg  [1:0]   s2_ax;
     wire         s2_last  = s2_ax == DIM_LAST;
+    reg  [W-1:0] round_q;             // stage 3: the rounded product (a product is used here)
+    reg          s3_v;
+    reg  [1:0]   s3_ax;
+    wire         s3_last  = s3_ax == DIM_LAST;
     wire [W-1:0]   mul_round;
     wire [2*W-1:0] mul_exact;
     /* verilator lint_off PINCONNECTEMPTY */
@@ -110,22 +114,25 @@ module toward #(
         end else begin
             s1_v <= issue;
             s2_v <= s1_v;
+            s3_v <= s2_v && !s2_sq;
         end
         // datapath: no reset (the valid bits say what is there)
-        op_a   <= d_ax;
-        op_b   <= state_q == S_MUL ? r_q : d_ax;
-        s1_sq  <= state_q == S_SQ;
-        s1_ax  <= ax_q;
-        prod_q <= mul_exact;
-        s2_sq  <= s1_sq;
-        s2_ax  <= s1_ax;
+        op_a    <= d_ax;
+        op_b    <= state_q == S_MUL ? r_q : d_ax;
+        s1_sq   <= state_q == S_SQ;
+        s1_ax   <= ax_q;
+        prod_q  <= mul_exact;
+        s2_sq   <= s1_sq;
+        s2_ax   <= s1_ax;
+        round_q <= mul_round;
+        s3_ax   <= s2_ax;
     end
 
     // ---- the lanes: d = C - P at start; one adder forms T[ax] from a used product ----
     wire [DIM*W-1:0] d_new;
     wire [W-1:0]     t_sum;
-    wire [W-1:0]     d_s2 = d_q[s2_ax * W +: W];
-    wire [W-1:0]     p_s2 = p_q[s2_ax * W +: W];
+    wire [W-1:0]     d_s3 = d_q[s3_ax * W +: W];
+    wire [W-1:0]     p_s3 = p_q[s3_ax * W +: W];
     /* verilator lint_off PINCONNECTEMPTY */
     // saturation flags are not needed: the saturated value is the result
     genvar k;
@@ -134,12 +141,12 @@ module toward #(
             fx_add #(.W(W), .SUB(1)) u_d (.sub(1'b1), .a(c[k*W +: W]), .b(p[k*W +: W]), .y(d_new[k*W +: W]), .sat());
         end
     endgenerate
-    fx_add #(.W(W)) u_t (.sub(excess_q), .a(excess_q ? d_s2 : p_s2), .b(mul_round), .y(t_sum), .sat());
+    fx_add #(.W(W)) u_t (.sub(excess_q), .a(excess_q ? d_s3 : p_s3), .b(round_q), .y(t_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
     wire           use_sq     = s2_v && s2_sq;
-    wire           use_prod   = s2_v && !s2_sq;
+    wire           use_prod   = s3_v;
     wire           sqrt_start = use_sq && s2_last;
     wire [2*W-1:0] radicand   = sq_q + prod_q; // each square <= 2^(2W-2), so a sum of three fits 2W bits
     wire           sqrt_done, div_done, div_zero;
@@ -165,7 +172,7 @@ module toward #(
             S_ROOT:  if (sqrt_done) state_d = S_DIV;
             S_DIV:   if (div_done) begin state_d = S_MUL; ax_d = 2'd0; end
             S_MUL:   if (ax_last) state_d = S_DRAIN; else ax_d = ax_q + 1'b1;
-            S_DRAIN: if (use_prod && s2_last) begin state_d = S_IDLE; done_d = 1'b1; end
+            S_DRAIN: if (use_prod && s3_last) begin state_d = S_IDLE; done_d = 1'b1; end
             default: state_d = S_IDLE;
         endcase
     end
@@ -181,8 +188,8 @@ module toward #(
             state_q <= state_d;
             ax_q    <= ax_d;
             done_q  <= done_d;
-            if (use_prod) t[s2_ax * W +: W] <= t_sum;
-            if (use_prod && s2_last) valid <= !dz_q;
+            if (use_prod) t[s3_ax * W +: W] <= t_sum;
+            if (use_prod && s3_last) valid <= !dz_q;
         end
     end
 
