@@ -95,6 +95,7 @@ module node_lane #(
     wire [W-1:0] g, gp;              // stage B: the ground pass's result
     reg  [W-1:0] n_c, q_c, g_c, gp_c;
     reg          hit_c;
+    reg          left_c;             // the pointer is left of (below) the old position: the impulse adds
     wire [W-1:0] np;                 // stage C: the previous position after the mouse impulse
     always @(posedge clk) begin
         if (stage_a) begin
@@ -105,11 +106,12 @@ module node_lane #(
             hit_b <= hit_a;
         end
         if (stage_b) begin
-            n_c   <= n;
-            q_c   <= q_b;
-            g_c   <= g;
-            gp_c  <= gp;
-            hit_c <= hit_b;
+            n_c    <= n;
+            q_c    <= q_b;
+            g_c    <= g;
+            gp_c   <= gp;
+            hit_c  <= hit_b;
+            left_c <= $signed(mouse) < $signed(q_b);
         end
     end
     assign hit = hit_c;
@@ -185,18 +187,19 @@ module node_lane #(
             wire [W:0] dd = {mouse[W-1], mouse} - {n_c[W-1], n_c};
             assign touch = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
             if (AXIS == 0) begin : g_impulse
-                // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left of x)
+                // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left
+                // of x, a comparison made in stage B)
                 wire [W-1:0] pushed;
-                fx_add #(.W(W)) u_push (.sub(!($signed(mouse) < $signed(q_c))), .a(n_c), .b(impulse), .y(pushed), .sat());
+                fx_add #(.W(W)) u_push (.sub(!left_c), .a(n_c), .b(impulse), .y(pushed), .sat());
                 assign np = in_touch ? pushed : q_c;
             end else begin : g_no_impulse
                 assign np = q_c;
-                wire unused_impulse = &{1'b0, impulse, in_touch};
+                wire unused_impulse = &{1'b0, impulse, in_touch, left_c};
             end
         end else begin : g_no_mouse
             assign touch = 1'b1;
             assign np = q_c;
-            wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch};
+            wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch, left_c};
         end
     endgenerate
 

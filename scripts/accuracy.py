@@ -32,6 +32,9 @@ import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.environ.get("BUILD", "build")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True
+import synth  # noqa: E402  (make synth's Yosys flow and stat readers: one flow for every report)
 ADIR = os.path.join(BUILD, "accuracy")
 CACHE = os.path.join(ADIR, "cache")
 SWEEP = os.path.join(BUILD, "sweep")
@@ -268,15 +271,12 @@ def get(r, field):
     return v
 
 
-# ---- the cycle formula, restated from docs/architecture.md, to cross-check the C side ----
+# ---- the cycle formula: model/timing.c, through `strand info` ----
 
-def cycles_formula(m, k, sqrt_bits, div_bits, iterations, substeps, rule="centred"):
-    toward = sqrt_bits + div_bits + 9
-    if rule == "centred":
-        pas = 2 + m * k * (2 * toward + 2)   # chain_sequencer: two targets per node, then the window slides
-    else:
-        pas = (m * k - 1) * (toward + 5)     # pair_sequencer: every link: read a, b, excess, write a, b
-    return substeps * (k + 2 + iterations * pas) + 1
+def cycles_of_scene(path):
+    """Cycles per frame of a scene's build, as the one formula (model/timing.c) gives them."""
+    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"], capture_output=True, text=True)
+    return json.loads(p.stdout)["timing"]["cycles_per_frame"] if p.returncode == 0 else None
 
 
 # ---- Yosys: cells of the 4x5 build ----
@@ -291,22 +291,17 @@ SYNTH_POINTS = [  # (W, F, SQRT_BITS, DIV_BITS, flows)
     (32, 16, 31, 16, ("generic",)),
     (32, 16, 31, 24, ("generic",)),
 ]
-FLOW_CMD = {"generic": "synth -flatten -top strand_top",
-            "ice40": "synth_ice40 -dsp -flatten -top strand_top",
-            "ecp5": "synth_ecp5 -flatten -top strand_top"}
 
 
 def synth_one(w, f, s, d, flow):
+    """One flow of make synth's 4x5 build at another format: synth.yosys_script, so that
+    this document and docs/resources.md quote the same cells for the same build."""
     gen = os.path.join(ROOT, BUILD, "gen")
-    ys = ["read_verilog -I" + gen + " " + " ".join(os.path.join(ROOT, x) for x in RTL_SRC),
-          f"chparam -set W {w} -set F {f} -set SQRT_BITS {s} -set DIV_BITS {d} -set M {SYNTH_MK[0]} -set K {SYNTH_MK[1]}"
-          " -set ITER 8 -set SUBSTEPS 4 -set EN_GRAVITY 1 -set EN_MOUSE 1 -set EN_CONSTRAINTS 1 -set EN_DAMPING 1 strand_top",
-          "hierarchy -check -top strand_top", FLOW_CMD[flow], "tee -q -o stat.json stat -json"]
-    text = "\n".join(ys) + "\n"
-    h = hashlib.sha256(text.encode())
-    for x in RTL_SRC + [os.path.join(BUILD, "gen", "strand_regs.vh")]:
-        h.update(open(os.path.join(ROOT, x), "rb").read())
-    key = h.hexdigest()[:20]
+    srcs = [os.path.join(ROOT, x) for x in RTL_SRC]
+    prm = synth.params(synth.CHECK_CONFIG) + [("W", w), ("F", f), ("SQRT_BITS", s), ("DIV_BITS", d)]
+    text = synth.yosys_script(flow, prm, gen, srcs, f"the {synth.CHECK_CONFIG} build at W={w} F={f}")
+    text = "".join(ln + "\n" for ln in text.splitlines() if not ln.startswith("write_json"))
+    key = synth.digest(text, synth.file_digest(srcs + synth.gen_files(gen)))[:20]
     path = os.path.join(ROOT, CACHE, "synth_" + key + ".json")
     if os.path.exists(path):
         with open(path) as fh:
@@ -315,23 +310,17 @@ def synth_one(w, f, s, d, flow):
         return r
     d_ = os.path.join(ROOT, ADIR, "synth", key)
     os.makedirs(d_, exist_ok=True)
-    with open(os.path.join(d_, "run.ys"), "w") as fh:
+    with open(os.path.join(d_, f"{flow}.ys"), "w") as fh:
         fh.write(text)
     t0 = time.time()
-    p = subprocess.run(["yosys", "-q", "-l", "yosys.log", "run.ys"], cwd=d_, capture_output=True, text=True)
+    p = subprocess.run(["yosys", "-q", "-l", "yosys.log", f"{flow}.ys"], cwd=d_, capture_output=True, text=True)
     r = dict(width=w, frac=f, sqrt_bits=s, div_bits=d, flow=flow, seconds=round(time.time() - t0, 1))
     if p.returncode != 0:
         r["error"] = "yosys failed: see " + os.path.join(d_, "yosys.log")
         return r
-    txt = open(os.path.join(d_, "stat.json")).read()
-    try:
-        data = json.loads(txt)
-    except ValueError:
-        data = json.loads("\n".join(ln for ln in txt.splitlines() if ln.strip()[:1] in ('"', "{", "}", "[", "]")))
-    mods = data["modules"]
-    top = [m for m in mods if "strand_top" in m][0]
-    cells = mods[top]["num_cells_by_type"]
-    r["cells"] = mods[top]["num_cells"]
+    mods = synth.load_stat(os.path.join(d_, f"{flow}.stat.json"))
+    cells = synth.flat_counts(mods, synth.find_top(mods))
+    r["cells"] = sum(cells.values())
     if flow == "ice40":
         r["luts"] = cells.get("SB_LUT4", 0)
         r["dsps"] = cells.get("SB_MAC16", 0)
@@ -931,10 +920,10 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     # cells
     A("## Error against area")
     A("")
-    A(f"Yosys cells of the {SYNTH_MK[0]}x{SYNTH_MK[1]} build of `strand_top` (all effects on, damping included) at each "
-      "format and at a few SQRT_BITS / DIV_BITS; the cell count depends on W and the bits, not on the scene, the "
-      "iterations or the substeps (only counters grow). Generic `synth`; `synth_ice40 -dsp` and `synth_ecp5` for two "
-      "formats.")
+    A(f"Yosys cells of the {SYNTH_MK[0]}x{SYNTH_MK[1]} build of `strand_core` that [resources.md](resources.md) "
+      "reports (the same flow: scripts/synth.py yosys_script), at each format and at a few SQRT_BITS / DIV_BITS; the "
+      "cell count depends on W and the bits, not on the scene, the iterations or the substeps. Generic `synth` (the "
+      "hierarchy kept); `synth_ice40 -dsp` and `synth_ecp5` for two formats.")
     A("")
     A("| W, F | SQRT_BITS | DIV_BITS | generic cells | iCE40 LUT4 / SB_MAC16 | ECP5 LUT4 / MULT18X18 | catenary RMS vs double |")
     A("|---|---|---|---|---|---|---|")
@@ -1103,10 +1092,12 @@ def cmd_test(a):
     for p in pts:
         r = res(p)
         if r.get("cycles_kind") == "rtl-formula":
-            sc_m, sc_k = {"catenary": (2, 12), "pendulum": (1, 2), "energy": (1, 2), "swing": (2, 8)}.get(p["scene"], (None, None))
-            if sc_m:
-                want = cycles_formula(sc_m, sc_k, r["sqrt_bits"], r["div_bits"], r["iterations"], r["substeps"], r["rule"])
-                check(r["cycles"] == want, f"cycles: {label(p)}: sweep {r['cycles']} = the architecture formula {want}")
+            scene_file = os.path.join(ROOT, ADIR, "scenes", point_key(p) + ".scene")
+            os.makedirs(os.path.dirname(scene_file), exist_ok=True)
+            with open(scene_file, "w") as fh:
+                fh.write(derive(p))
+            want = cycles_of_scene(scene_file)
+            check(r["cycles"] == want, f"cycles: {label(p)}: sweep {r['cycles']} = strand info's formula {want}")
     d = derive(point("catenary", 18, 8, sqrt_bits=11, substeps=3, iterations=5, rule="pairwise"))
     check(all(s in d for s in ("width = 18", "frac = 8", "sqrt_bits = 11", "div_bits = 17", "substeps = 3",
                                "iterations = 5", "rule = pairwise")), "derive: a point's overrides reach its scene file")
