@@ -34,7 +34,7 @@ RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model run sim wave docs-sim bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
+.PHONY: help bootstrap model run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -48,6 +48,8 @@ help:
 	@echo "  make lockstep-hard  every hard case the RTL supports, in lockstep (sim/scenes/hard_*.scene)"
 	@echo "  make model       build the C model library and the CLI, $(STRAND)"
 	@echo "  make docs-sim    regenerate the picture and summary README.md shows"
+	@echo "  make docs-tables regenerate the tables of docs/architecture.md (registers, parameters, cycle formula)"
+	@echo "  make test-axil   the AXI4-Lite shell under cocotb, against the C model"
 	@echo "  make bench       simulated cycles per second (lockstep, RTL alone, model alone) -> docs/performance.md"
 	@echo "  make movie [SCENE=...]  an MP4 and a GIF of the scene's frames (build/movie/)"
 	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
@@ -206,7 +208,13 @@ AXIL_SCENES := sim/scenes/ref000_rope.scene:3 tb/scenes/graph3d_q12.scene:3
 test-axil: $(STRAND) $(GEN_HDRS)
 	@rc=0; for s in $(AXIL_SCENES); do $(PYTHON) tb/cocotb/run_axil.py $${s%%:*} --frames $${s##*:} || rc=1; done; exit $$rc
 
-TEST_STEPS := lint test-model test-scenes $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil \
+# The tables docs/architecture.md quotes (registers, parameters, the cycle formula) from their one sources.
+docs-tables: $(STRAND)
+	@python3 scripts/doc_tables.py docs/architecture.md
+test-docs: $(STRAND)
+	@python3 scripts/doc_tables.py --check docs/architecture.md
+
+TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap

@@ -676,7 +676,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     A("- **stretch**: the largest |l - rest| / rest of any link, over the run (`max`) and at the last frame (`rest`).")
     A("")
     A("**Cycles per frame.** For a scene the RTL builds (`hw_check()` passes: a 2D chain at rest, centred or pairwise "
-      "rule) the figure is `hw_cycles_per_frame()` (model/hwgen.c), the RTL's formula "
+      "rule) the figure is `hw_cycles_per_frame()` (model/timing.c), the RTL's formula "
       "`substeps (K + 2 + iterations pass) + 1` with `pass = 2 + M K (2 (SQRT_BITS + DIV_BITS + 9) + 2)` for the "
       "centred rule and `(M K - 1)(SQRT_BITS + DIV_BITS + 14)` for the pairwise rule (docs/architecture.md), which the "
       "test suite checks against the RTL every frame. Scenes the RTL does not build (the spring pair: a graph with a "

@@ -1,4 +1,4 @@
-# scripts/effects.mk - what each effect costs strand_top (docs/effects.md), and the check
+# scripts/effects.mk - what each effect costs strand_core (docs/effects.md), and the check
 # that an effect switched off costs nothing.
 #
 # Included by the top Makefile:

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""effects.py - what each effect costs strand_top, and that a switched-off effect costs nothing.
+"""effects.py - what each effect costs strand_core, and that a switched-off effect costs nothing.
 
 Run from the repository root (scripts/effects.mk does):
 
@@ -56,7 +56,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 # title    what the document calls it
 # scene    the lines that turn the effect on, by scene section: S is the body plus
 #          these; "without the effect" is the body without them
-# params   the strand_top parameters the effect sets, as hwgen must derive them from S
+# params   the strand_core parameters the effect sets, as hwgen must derive them from S
 #          (these may differ from the body's: a graph has one unit of every node)
 # enable   (optional) the parameters the gating test forces to 0; default: every EN_*
 #          among params. A row with none (a body property: DIM, GRAPH) is measured
@@ -65,7 +65,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 #          that needs another one to act); its cost is measured over them
 # replace  (optional) sections of the body that S has instead (None: S drops it)
 #
-# scene, replace and params may be functions of the body (a dict of strand_top
+# scene, replace and params may be functions of the body (a dict of strand_core
 # parameters, below), for rows whose lines depend on its size. The values are
 # run-time constants: they change no cell and no cycle, but the lockstep runs use
 # them, so they must make a valid scene on both bodies.
@@ -148,7 +148,7 @@ SECTION_ORDER = ["scene", "format", "time", "chain", "graph", "gravity", "mouse"
 
 
 def body_sections(build):
-    """Scene sections for a body given as strand_top parameters."""
+    """Scene sections for a body given as strand_core parameters."""
     b = build
     return {
         "format": [f"width = {b['W']}", f"frac = {b['F']}", f"sqrt_bits = {b['SQRT_BITS']}", f"div_bits = {b['DIV_BITS']}"],
@@ -670,7 +670,7 @@ def write_doc(o, rows, res, body_name, body):
       f"{yver}; {vver}. RTL: {', '.join(f'`{s}`' for s in srcs)}, sha256 "
       f"`{sources_digest(o.srcs)[:16]}`{git_note(o.rtl_dir)}.")
     w("")
-    w("Every effect of `strand_top` sits behind a `generate` switch, so a scene pays only for the "
+    w("Every effect of `strand_core` sits behind a `generate` switch, so a scene pays only for the "
       "effects it names (design.md section 3). This is each effect's price in cells and in cycles per frame, "
       f"measured on one body: the {body_name} of [resources.md](resources.md), "
       + ", ".join(f"{n}={v}" for n, v in body.items())
@@ -729,18 +729,18 @@ def write_doc(o, rows, res, body_name, body):
     w("## How it was measured")
     w("")
     w("For each row, scripts/effects.py writes a scene: the body below plus the effect's lines (the baseline "
-      "has none), and runs `strand hwgen` on it, which derives the `strand_top` parameters exactly as "
+      "has none), and runs `strand hwgen` on it, which derives the `strand_core` parameters exactly as "
       "`make sim` does. The script checks that they are the body's and that the effect sets the parameters "
       "the table names. Then, on those parameters:")
     w("")
-    w("- Yosys, as `make synth` runs it ([resources.md](resources.md)): `synth -top strand_top` and `stat` "
+    w("- Yosys, as `make synth` runs it ([resources.md](resources.md)): `synth -top strand_core` and `stat` "
       "(generic cells, summed over the module hierarchy; `check -assert`, no latches), `synth_ice40 -dsp` "
       "(SB_LUT4, DFF = every SB_DFF* kind, SB_CARRY, SB_MAC16, SB_RAM40_4K) and `synth_ecp5` (LUT4, the "
       "PFUMX and L6MUX21 muxes, TRELLIS_FF, CCU2C, MULT18X18D, DP16KD); no place and route.")
     w(f"- Cycles per frame: the `make sim` harness (tb/harness.cpp: the RTL under Verilator in lockstep with "
       f"the cycle model, every output in every cycle) runs the scene for {o.frames} frames and reports the "
       "cycles from `step` to `frame_done`, which must be the same in every frame. The script fails unless "
-      "that equals `hw_cycles_per_frame()` (model/hwgen.c, the formula of [architecture.md](architecture.md)), "
+      "that equals `hw_cycles_per_frame()` (model/timing.c, the formula of [architecture.md](architecture.md)), "
       "which `strand hwgen` exports; both columns above are printed from the run.")
     w("")
     w("The body (its run-time values change no cell and no cycle; the lockstep runs use them):")

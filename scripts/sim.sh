@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # sim.sh SCENE [--waves] - the main job: SCENE on the RTL in lockstep with the C model.
 #
-# Builds strand_top with exactly the scene's parameters and effects (cached), runs
+# Builds strand_core with exactly the scene's parameters and effects (cached), runs
 # it cycle for cycle against the cycle model, and writes into build/sim/<scene>/:
 # positions.csv (every frame end), final.png (the last frame), and with --waves an
 # FST trace and a GTKWave save file for it.
@@ -14,7 +14,7 @@ name=$(basename "$scene" .scene)
 out=$build/sim/$name
 "$build/strand" check "$scene" >/dev/null   # a bad scene stops here, with file:line
 mkdir -p "$out"
-echo "building strand_top for $scene (Verilator; cached once built)..."
+echo "building strand_core for $scene (Verilator; cached once built)..."
 harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene")
 args=(--csv "$out/positions.csv" --png "$out/final.png")
 if [ "$waves" = "--waves" ]; then

@@ -1,8 +1,8 @@
 // harness.cpp - the RTL and the cycle model in lockstep, every output, every cycle.
 //
 // Drives clk, reset, the scene's register writes, the scripted mouse and step on
-// the Verilated sim_top (strand_top built for one scene) and on the C cycle model
-// (model/cycle.c), edge for edge, and compares every output of strand_top in every
+// the Verilated sim_top (strand_core built for one scene, its observation port unpacked) and on the C cycle model
+// (model/cycle.c), edge for edge, and compares every output of strand_core in every
 // cycle. The first mismatch prints the cycle, each differing signal with both
 // values, the phase and the indices, saves an FST trace of the run up to that
 // cycle (the run is deterministic, so it is replayed with tracing on), and exits 1.

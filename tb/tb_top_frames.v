@@ -5,7 +5,7 @@
 `include "params.vh"
 
 /*
- * tb_top_frames - strand_top against the C frame engine, frame by frame.
+ * tb_top_frames - strand_core against the C frame engine, frame by frame.
  *
  * sim_top (strand_core with its observation port unpacked) is built from the
  * params.vh that `strand hwgen SCENE DIR` writes (the build), with config.hex (the setup
