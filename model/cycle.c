@@ -173,7 +173,7 @@ static void reset_all(cyc_model *c)
     }
     c->running = c->done = false;
     c->vidx = 0;
-    c->pass_b = c->pass_c = false;
+    c->pass_b = c->pass_c = c->pass_d = false;
     for (int u = 0; u < c->hp.m; u++) {
         c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
         c->wb_valid[u] = false;
@@ -371,22 +371,22 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             lane_write(c, written, node / k, node % k, node);
         }
     }
-    /* A pass's stage C (node_unit): node idx_c of every unit is written. Its stage A read
-       it three edges ago; nothing else writes a node during a pass, so computing it here, from
+    /* A pass's stage D (node_unit): node idx_d of every unit is written. Its stage A read
+       it four edges ago; nothing else writes a node during a pass, so computing it here, from
        the storage as it is now, is the same. */
-    if (c->pass_c && c->ground_c) {
+    if (c->pass_d && c->ground_d) {
         for (int u = 0; u < m; u++) {
-            int node = u * k + c->idx_c;
-            if (sim_fx_ground_node(&c->s, node)) lane_write(c, written, u, c->idx_c, node);
+            int node = u * k + c->idx_d;
+            if (sim_fx_ground_node(&c->s, node)) lane_write(c, written, u, c->idx_d, node);
         }
-    } else if (c->pass_c) {
+    } else if (c->pass_d) {
         for (int u = 0; u < m; u++) {
-            int node = u * k + c->idx_c;
+            int node = u * k + c->idx_d;
             for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;
             if (sim_fx_verlet_node(&c->s, node)) {
                 if (hp->en_mouse && !hp->grab) sim_fx_mouse_node(&c->s, node);
-                lane_write(c, written, u, c->idx_c, node);
+                lane_write(c, written, u, c->idx_d, node);
             }
             /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
             for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
@@ -459,6 +459,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const int idx_b_next = c->vidx;
     const bool pass_c_next = c->pass_b, ground_c_next = c->ground_b;
     const int idx_c_next = c->idx_b;
+    const bool pass_d_next = c->pass_c, ground_d_next = c->ground_c;
+    const int idx_d_next = c->idx_c;
     if (verlet_start || ground_start) {
         c->running = true;
         c->done = false;
@@ -469,7 +471,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             if (c->vidx == k - 1) c->running = false;
             c->vidx = (c->vidx + 1) & ((1 << hp->iw) - 1);
         }
-        if (c->pass_c && c->idx_c == k - 1) c->done = true; /* the last node is written */
+        if (c->pass_d && c->idx_d == k - 1) c->done = true; /* the last node is written */
     }
     c->pass_b = pass_b_next;
     if (pass_b_next) {
@@ -480,6 +482,11 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     if (pass_c_next) {
         c->idx_c = idx_c_next;
         c->ground_c = ground_c_next;
+    }
+    c->pass_d = pass_d_next;
+    if (pass_d_next) {
+        c->idx_d = idx_d_next;
+        c->ground_d = ground_d_next;
     }
 
     /* frame_ctrl's FSM. */

@@ -89,8 +89,10 @@ typedef struct {
     int vidx;         /* stage A: the node whose data arrive */
     bool pass_b, ground_b; /* stage B: a node of a pass (of the ground pass) */
     int idx_b;
-    bool pass_c, ground_c; /* stage C: it is written */
+    bool pass_c, ground_c; /* stage C */
     int idx_c;
+    bool pass_d, ground_d; /* stage D: it is written */
+    int idx_d;
     fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS];
     bool wb_valid[CYC_MAX_UNITS];
     uint32_t wb_idx[CYC_MAX_UNITS];

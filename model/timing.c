@@ -37,12 +37,12 @@ long hw_spring_pass(const hw_params *hp)
 }
 
 /* The terms of a substep and of a frame. */
-/* node_unit: K nodes through a three-stage pass (the last written 3 cycles after its read), FV;
+/* node_unit: K nodes through a four-stage pass (the last written 4 cycles after its read), FV;
    with constraints the sequencer starts the cycle after */
-static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 4 : 3); }
+static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 5 : 4); }
 static long constrain_phase(const hw_params *hp) { return hp->en_constraints ? hp->iter * hw_constraint_pass(hp) : 0; }
 static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
-static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 3 : 0; }
+static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 4 : 0; }
 static long grab_phase(const hw_params *hp) { return hp->grab && hp->en_mouse ? node_count(hp) + 1 : 0; }
 
 long hw_cycles_per_frame(const hw_params *hp)
@@ -58,7 +58,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
                     "constraint pass = %s = %ld\n"
                     "spring pass = 1 + links (LS + 5) = %ld\n"
-                    "substep = Verlet (K + 4 with constraints, else K + 3) + ITER passes [+ spring pass] [+ ground K + 3] = %ld\n"
+                    "substep = Verlet (K + 5 with constraints, else K + 4) + ITER passes [+ spring pass] [+ ground K + 4] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hw_toward_latency(hp), hw_spring_latency(hp),
                     hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)", hw_constraint_pass(hp),

@@ -28,11 +28,12 @@
  * else the external data (init walk, NODE loads, the sequencer), a pinned node's
  * previous position = its position (it starts at rest).
  *
- * Timing: a pass is a three-stage pipeline, each stage registered. Stage A, the cycle
+ * Timing: a pass is a four-stage pipeline, each stage registered. Stage A, the cycle
  * port A's data arrive: the velocity v = q - qp (and the ground test). Stage B: the
  * rest of the Verlet step (damping, x + v, gravity, the spring force), or the ground
- * pass's bounce and friction. Stage C: the mouse test and impulse, and the write. So
- * no path holds more than two of the step's adders; a node is written three cycles
+ * pass's bounce and friction. Stage C: the mouse's in-touch test on this axis and the
+ * impulse's sum. Stage W (the write): the impulse chosen (every axis in touch) and the write. So
+ * no path holds more than two of the step's adders; a node is written four cycles
  * after its address. Storage reads are synchronous (address now, data next cycle),
  * read before write.
  */
@@ -58,9 +59,10 @@ module node_lane #(
     // the pass pipeline (node_unit's stage valids) and how the write is formed
     input  wire          stage_a,    // a pass's node is in stage A (its data arrive now)
     input  wire          stage_b,    //   in stage B
-    input  wire          pass_c,     //   in stage C: write its result
-    input  wire          ground_c,   //   the ground pass
-    input  wire          grab_c,     //   the node is the grabbed one (GRAB)
+    input  wire          stage_c,    //   in stage C
+    input  wire          pass_w,     //   in stage W: write its result
+    input  wire          ground_w,   //   the ground pass
+    input  wire          grab_w,     //   the node is the grabbed one (GRAB)
     input  wire          w_pin,      // an external write to a pinned node: at rest
     input  wire [W-1:0]  w_pos,      // external write data
     input  wire [W-1:0]  w_prev,
@@ -81,8 +83,8 @@ module node_lane #(
     output wire [W-1:0]  qp,
     output wire [W-1:0]  qa,
     output wire [W-1:0]  b_data,     // port B: position (node_unit masks unwritten nodes)
-    output wire          touch,      // stage C: |mouse - n| < box on this axis
-    output wire          hit,        // stage C, AXIS = GROUND_AXIS: past the boundary
+    output wire          touch,      // stage W: |mouse - n| < box on this axis
+    output wire          hit,        // stage W, AXIS = GROUND_AXIS: past the boundary
     output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)
 );
 
@@ -96,7 +98,11 @@ module node_lane #(
     reg  [W-1:0] n_c, q_c, g_c, gp_c;
     reg          hit_c;
     reg          left_c;             // the pointer is left of (below) the old position: the impulse adds
-    wire [W-1:0] np;                 // stage C: the previous position after the mouse impulse
+    wire [W-1:0] pushed;             // stage C: the previous position the impulse would give (x)
+    wire         touch_c;            // stage C: in touch on this axis
+    reg  [W-1:0] n_w, q_w, g_w, gp_w, pushed_w;
+    reg          hit_w, touch_w;
+    wire [W-1:0] np;                 // stage W: the previous position after the mouse impulse
     always @(posedge clk) begin
         if (stage_a) begin
             q_b   <= q;
@@ -113,13 +119,23 @@ module node_lane #(
             hit_c  <= hit_b;
             left_c <= $signed(mouse) < $signed(q_b);
         end
+        if (stage_c) begin
+            n_w      <= n_c;
+            q_w      <= q_c;
+            g_w      <= g_c;
+            gp_w     <= gp_c;
+            hit_w    <= hit_c;
+            touch_w  <= touch_c;
+            pushed_w <= pushed;
+        end
     end
-    assign hit = hit_c;
+    assign hit   = hit_w;
+    assign touch = touch_w;
 
     // ---- storage ----
     wire [W-1:0] wprev_data;
-    assign wdata      = pass_c ? (EN_GROUND && ground_c ? g_c : GRAB && grab_c ? mouse : n_c) : w_pos;
-    assign wprev_data = pass_c ? (EN_GROUND && ground_c ? gp_c : np) : w_pin ? w_pos : w_prev;
+    assign wdata      = pass_w ? (EN_GROUND && ground_w ? g_w : GRAB && grab_w ? mouse : n_w) : w_pos;
+    assign wprev_data = pass_w ? (EN_GROUND && ground_w ? gp_w : np) : w_pin ? w_pos : w_prev;
 
     strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pos (
         .clk(clk), .we(we), .waddr(widx), .wdata(wdata),
@@ -178,28 +194,29 @@ module node_lane #(
         end
     endgenerate
 
-    // ---- stage C, the mouse: this axis's in-touch test, and the impulse (x only) ----
+    // ---- stages C and W, the mouse: this axis's in-touch test, and the impulse (x only) ----
     generate
         if (EN_MOUSE && !GRAB) begin : g_mouse
             // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, both exact in W+1 bits
             // (a saturated difference is never inside the box): no saturating subtract,
             // no negation per node
             wire [W:0] dd = {mouse[W-1], mouse} - {n_c[W-1], n_c};
-            assign touch = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
+            assign touch_c = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
             if (AXIS == 0) begin : g_impulse
                 // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left
-                // of x, a comparison made in stage B)
-                wire [W-1:0] pushed;
+                // of x, a comparison made in stage B); taken in stage W when every axis touches
                 fx_add #(.W(W)) u_push (.sub(!left_c), .a(n_c), .b(impulse), .y(pushed), .sat());
-                assign np = in_touch ? pushed : q_c;
+                assign np = in_touch ? pushed_w : q_w;
             end else begin : g_no_impulse
-                assign np = q_c;
-                wire unused_impulse = &{1'b0, impulse, in_touch, left_c};
+                assign pushed = q_c;
+                assign np = q_w;
+                wire unused_impulse = &{1'b0, impulse, in_touch, left_c, pushed_w};
             end
         end else begin : g_no_mouse
-            assign touch = 1'b1;
-            assign np = q_c;
-            wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch, left_c};
+            assign touch_c = 1'b1;
+            assign pushed = q_c;
+            assign np = q_w;
+            wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch, left_c, pushed_w};
         end
     endgenerate
 
@@ -221,7 +238,7 @@ module node_lane #(
             assign g     = q_b;
             assign gp    = qp_b;
             assign hit_a = 1'b0;
-            wire unused_ground = &{1'b0, ground, friction, ground_c, g_c, gp_c, hit_c};
+            wire unused_ground = &{1'b0, ground, friction, ground_w, g_w, gp_w, hit_w};
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */

@@ -32,9 +32,10 @@
  *
  * Timing (the cycle model mirrors it): verlet_start seen at edge 0 clears
  * verlet_done and presents address 0; node i's data arrive in cycle i + 1 (stage A:
- * the velocity), stage B (the rest of the Verlet step) is cycle i + 2, and it is
- * written at edge i + 3 (stage C: the mouse, the write); verlet_done rises at edge
- * K + 2 and stays high until the next start. The ground pass is timed the same. With DEBUG, every write to this unit (pass, init, load or
+ * the velocity), stage B (the rest of the Verlet step) is cycle i + 2, stage C (the
+ * mouse's tests) cycle i + 3, and it is written at edge i + 4 (stage W: the impulse
+ * chosen, the write); verlet_done rises at edge K + 3 and stays high until the next
+ * start. The ground pass is timed the same. With DEBUG, every write to this unit (pass, init, load or
  * sequencer) shows on the write-back lane in the next cycle.
  */
 module node_unit #(
@@ -98,16 +99,18 @@ module node_unit #(
     localparam [IW:0]   K_COUNT  = K[IW:0];           // node count, one bit wider than an index
     localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];  // index of the last node
 
-    // ---- the pass FSM: stage A (running, vidx: the node whose data arrive), stage B
-    // (stage_b) and stage C (pass_c, idx_c: the node written) ----
+    // ---- the pass FSM: stage A (running, vidx: the node whose data arrive), stages B
+    // and C, and stage W (pass_w, idx_w: the node written) ----
     reg          running_q, running_d;  // a pass is under way: a node is in stage A
     reg          done_q, done_d;        // FV
     reg [IW-1:0] vidx_q, vidx_d;        // node whose data port A returns this cycle
     reg          ground_q, ground_d;    // the pass under way is the ground pass
     reg          stage_b, ground_b, pin_b, grab_b;   // stage B: a node of the pass, and how to write it
     reg [IW-1:0] idx_b;
-    reg          pass_c, ground_c, pin_c, grab_c;    // stage C
+    reg          stage_c, ground_c, pin_c, grab_c;   // stage C
     reg [IW-1:0] idx_c;
+    reg          pass_w, ground_w, pin_w, grab_w;    // stage W: the write
+    reg [IW-1:0] idx_w;
 
     wire last = vidx_q == K_LAST;
     wire pass_start = verlet_start || (EN_GROUND && ground_start);
@@ -127,7 +130,7 @@ module node_unit #(
                 vidx_d = vidx_q + 1'b1;
                 if (last) running_d = 1'b0;
             end
-            if (pass_c && idx_c == K_LAST) done_d = 1'b1;  // the last node is written
+            if (pass_w && idx_w == K_LAST) done_d = 1'b1;  // the last node is written
         end
     end
 
@@ -138,14 +141,16 @@ module node_unit #(
             vidx_q    <= {IW{1'b0}};
             ground_q  <= 1'b0;
             stage_b   <= 1'b0;
-            pass_c    <= 1'b0;
+            stage_c   <= 1'b0;
+            pass_w    <= 1'b0;
         end else begin
             running_q <= running_d;
             done_q    <= done_d;
             vidx_q    <= vidx_d;
             ground_q  <= ground_d;
             stage_b   <= running_q;
-            pass_c    <= stage_b;
+            stage_c   <= stage_b;
+            pass_w    <= stage_c;
         end
         if (running_q) begin  // what the later stages need of the node
             idx_b    <= vidx_q;
@@ -158,6 +163,12 @@ module node_unit #(
             ground_c <= ground_b;
             pin_c    <= pin_b;
             grab_c   <= grab_b;
+        end
+        if (stage_c) begin
+            idx_w    <= idx_c;
+            ground_w <= ground_c;
+            pin_w    <= pin_c;
+            grab_w   <= grab_c;
         end
     end
 
@@ -176,19 +187,19 @@ module node_unit #(
         end
     assign a_pinned = q_pin || q_grab;
 
-    // ---- writes: the pass's stage C, else port A's writer ----
+    // ---- writes: the pass's stage W, else port A's writer ----
     // The grabbed node (GRAB): the Verlet pass puts it on the pointer, px = its old x;
     // the ground pass leaves it alone.
     wire [DIM-1:0] touch, hit;
     wire           in_touch = mouse_down && &touch;
     wire           g_hit    = |hit;    // only the normal axis's lane can hit
-    wire           pass_we  = pass_c && !pin_c && (!ground_c || (g_hit && !grab_c));
-    wire [IW-1:0]  widx     = pass_c ? idx_c : w_idx;
+    wire           pass_we  = pass_w && !pin_w && (!ground_w || (g_hit && !grab_w));
+    wire [IW-1:0]  widx     = pass_w ? idx_w : w_idx;
     wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
-    wire           wprev    = pass_c || w_at_rest;
+    wire           wprev    = pass_w || w_at_rest;
     wire           w_pin    = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
-    // the force: the Verlet pass consumes node idx_c's, the init walk and loads clear node w_idx's
-    wire           acc_clear = (pass_c && !ground_c) || (w_en && w_at_rest);
+    // the force: the Verlet pass consumes node idx_w's, the init walk and loads clear node w_idx's
+    wire           acc_clear = (pass_w && !ground_w) || (w_en && w_at_rest);
     wire [DIM*W-1:0] wdata;
     wire [DIM*W-1:0] b_pos_raw;  // port B before the written flags
 
@@ -203,7 +214,8 @@ module node_unit #(
                 .we(we), .wprev(wprev), .widx(widx),
                 .acc_clear(acc_clear && {1'b0, widx} < K_COUNT), .acc_clear_idx(widx),
                 .acc_we(acc_we && {1'b0, w_idx} < K_COUNT), .acc_w(acc_w[k*W +: W]),
-                .stage_a(running_q), .stage_b(stage_b), .pass_c(pass_c), .ground_c(ground_c), .grab_c(grab_c),
+                .stage_a(running_q), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
+                .grab_w(grab_w),
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
                 .gdt2(gdt2[k*W +: W]), .damping(damping), .impulse(impulse),

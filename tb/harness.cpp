@@ -267,7 +267,7 @@ bool Run::cycle(const cyc_inputs &in) {
         r_.mismatch_cycle = cyc_;
         return false;
     }
-    last_edge_verlet_ = model_.pass_c && !in.reset;  // a pass writes its stage-C node at this edge
+    last_edge_verlet_ = model_.pass_d && !in.reset;  // a pass writes its stage-D node at this edge
     if (rtl_on_) {
         top_->clk = 1;
         top_->eval();
