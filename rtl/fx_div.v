@@ -82,7 +82,6 @@ module fx_div #(
     localparam integer XB       = (NIT < M) ? NIT : M; // dividend bits fed in
     localparam integer CW       = $clog2(NIT);         // iteration counter width
     localparam integer CNT_LOAD = NIT - 1;             // counter value after edge 0
-    localparam [W-1:0] QUOT_MAX = {1'b0, {(W-1){1'b1}}};
 
     // Registers.
     reg           busy_q, busy_d;
@@ -102,26 +101,20 @@ module fx_div #(
     wire [W-1:0] acc_init = num >> (M - FS);            // floor(num * 2^F / 2^M)
     wire [M-1:0] low_bits = num[M-1:0] << FS;           // dividend bits M-1 .. 0
 
+`include "fx_div_step.vh"
+
     // Combinational values, computed at the top of the next-state block (one
     // block rather than a chain of assigns keeps event-driven simulation fast).
-    reg [W:0]     t;       // 2*acc + next dividend bit
-    reg [W+1:0]   diff;    // t - den, borrow in the top bit
-    reg           ge;      // t >= den: the new quotient bit
+    reg [W:0]     step;    // one iteration: {quotient bit, new partial remainder}
     reg [NIT-1:0] q_next;  // quotient bits after this iteration
-    reg [DB:0]    rounded; // last iteration: truncated quotient + rounding bit
-    reg           clamp;   // last iteration: the quotient does not fit
-    reg [W-1:0]   quot;    // last iteration: rounded quotient in place
+    reg [W:0]     fin;     // last iteration: {clamped, the rounded quotient in place}
 
     always @* begin
         // One iteration, from the registers.
-        t       = {acc_q, x_q[XB-1]};
-        diff    = {1'b0, t} - {2'b00, den_q};
-        ge      = !diff[W+1];
-        q_next  = {q_q[NIT-2:0], ge};
+        step    = div_step(acc_q, x_q[XB-1], den_q);
+        q_next  = {q_q[NIT-2:0], step[W]};
         // Rounding and clamping, used on the last iteration.
-        rounded = {1'b0, q_next[NIT-1:1]} + {{DB{1'b0}}, q_next[0]};
-        clamp   = big_q | rounded[DB];
-        quot    = {{(W-DB){1'b0}}, rounded[DB-1:0]} << LSB;
+        fin     = div_result(q_next, big_q);
 
         // Next state: hold by default.
 
@@ -139,15 +132,14 @@ module fx_div #(
         sat_d     = sat_q;
         if (busy_q) begin
             x_d   = x_q << 1;
-            // t < 2*den when acc < den, so the new acc is below den and fits W bits.
-            acc_d = ge ? diff[W-1:0] : t[W-1:0];
+            acc_d = step[W-1:0];
             q_d   = q_next;
             if (cnt_q == {CW{1'b0}}) begin
                 busy_d    = 1'b0;
                 done_d    = 1'b1;
-                result_d  = clamp ? QUOT_MAX : quot;
+                result_d  = fin[W-1:0];
                 dbz_out_d = dbz_q;
-                sat_d     = clamp & !dbz_q;
+                sat_d     = fin[W] & !dbz_q;
             end else begin
                 cnt_d = cnt_q - 1'b1;
             end

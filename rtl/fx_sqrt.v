@@ -89,30 +89,21 @@ module fx_sqrt #(
     reg [W-1:0]   result_q, result_d;
     reg           sat_q, sat_d;
 
-    localparam [W-1:0] ROOT_MAX = {1'b0, {(W-1){1'b1}}};
+
+`include "fx_sqrt_step.vh"
 
     // Combinational values, computed at the top of the next-state block (one
     // block rather than a chain of assigns keeps event-driven simulation fast).
-    reg [TW-1:0]  ac_in;   // 4*ac + next two radicand bits
-    reg [TW-1:0]  trial;   // 4*q + 1
-    reg [TW:0]    diff;    // ac_in - trial, borrow in the top bit
-    reg           ge;      // ac_in >= trial: the new root bit
+    reg [AW:0]    step;    // one iteration: {root bit, new partial remainder}
     reg [NIT-1:0] q_next;  // root bits after this iteration
-    reg [SB:0]    rounded; // last iteration: truncated root + rounding bit
-    reg           clamp;   // last iteration: the root does not fit
-    reg [W-1:0]   root;    // last iteration: rounded root in place
+    reg [W:0]     fin;     // last iteration: {clamped, the rounded root in place}
 
     always @* begin
         // One iteration, from the registers (q_q[NIT-1] is still 0 here).
-        ac_in   = {ac_q, x_q[XW-1 -: 2]};
-        trial   = {q_q, 2'b01};
-        diff    = {1'b0, ac_in} - {1'b0, trial};
-        ge      = !diff[TW];
-        q_next  = {q_q[NIT-2:0], ge};
+        step    = sqrt_step(ac_q, x_q[XW-1 -: 2], q_q);
+        q_next  = {q_q[NIT-2:0], step[AW]};
         // Rounding and clamping, used on the last iteration.
-        rounded = {1'b0, q_next[NIT-1:1]} + {{SB{1'b0}}, q_next[0]};
-        clamp   = big_q | rounded[SB];
-        root    = {{(W-SB){1'b0}}, rounded[SB-1:0]} << LSB;
+        fin     = sqrt_result(q_next, big_q);
 
         // Next state: hold by default.
 
@@ -127,13 +118,13 @@ module fx_sqrt #(
         sat_d    = sat_q;
         if (busy_q) begin
             x_d  = x_q << 2;
-            ac_d = ge ? diff[AW-1:0] : ac_in[AW-1:0];
+            ac_d = step[AW-1:0];
             q_d  = q_next;
             if (cnt_q == {CW{1'b0}}) begin
                 busy_d   = 1'b0;
                 done_d   = 1'b1;
-                result_d = clamp ? ROOT_MAX : root;
-                sat_d    = clamp;
+                result_d = fin[W-1:0];
+                sat_d    = fin[W];
             end else begin
                 cnt_d = cnt_q - 1'b1;
             end

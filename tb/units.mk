@@ -39,8 +39,9 @@ UNITS_VERILATOR ?= verilator
 UNITS_TIMEOUT   ?= 300
 UNITS_EXH_LANES ?= 16
 
-UNITS_NAMES := add mul avg sqrt div
+UNITS_NAMES := add mul avg sqrt div sqrt_pipe div_pipe
 UNITS_RTL_DIR ?= $(UNITS_ROOT)/rtl
+UNITS_VH      := $(wildcard $(UNITS_ROOT)/rtl/*.vh)  # included by the units: a change rebuilds them
 UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v) $(UNITS_ROOT)/rtl/fx_round.v
 # what each unit's file needs beside itself (fx_mul rounds with fx_round)
 UNITS_DEPS_mul := rtl/fx_round.v
@@ -72,7 +73,18 @@ UNITS_ICARUS_TESTS := \
     fx_div_w18_f8_b17_random:div:random:18:8:17 \
     fx_div_w32_f16_b31_random:div:random:32:16:31 \
     fx_div_w32_f16_b8_random:div:random:32:16:8 \
-    fx_div_w32_f30_b31_random:div:random:32:30:31
+    fx_div_w32_f30_b31_random:div:random:32:30:31 \
+    fx_sqrt_pipe_w8_b7_exhaustive:sqrt_pipe:exhaustive:8:4:7 \
+    fx_sqrt_pipe_w8_b3_exhaustive:sqrt_pipe:exhaustive:8:4:3 \
+    fx_sqrt_pipe_w18_b17_random:sqrt_pipe:random:18:8:17 \
+    fx_sqrt_pipe_w32_b31_random:sqrt_pipe:random:32:16:31 \
+    fx_sqrt_pipe_w32_b8_random:sqrt_pipe:random:32:16:8 \
+    fx_div_pipe_w8_f4_b7_exhaustive:div_pipe:exhaustive:8:4:7 \
+    fx_div_pipe_w8_f6_b3_exhaustive:div_pipe:exhaustive:8:6:3 \
+    fx_div_pipe_w8_f1_b7_exhaustive:div_pipe:exhaustive:8:1:7 \
+    fx_div_pipe_w32_f16_b31_random:div_pipe:random:32:16:31 \
+    fx_div_pipe_w32_f16_b8_random:div_pipe:random:32:16:8 \
+    fx_div_pipe_w32_f30_b31_random:div_pipe:random:32:30:31
 
 # Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS (module is toward or
 # spring_force; its testbench is tb/tb_<module>.v).
@@ -88,6 +100,11 @@ UNITS_PARAMS_mul  = -Ptb_fx_mul.W=$(1) -Ptb_fx_mul.F=$(2)
 UNITS_PARAMS_avg  = -Ptb_fx_avg.W=$(1)
 UNITS_PARAMS_sqrt = -Ptb_fx_sqrt.W=$(1) -Ptb_fx_sqrt.SQRT_BITS=$(3)
 UNITS_PARAMS_div  = -Ptb_fx_div.W=$(1) -Ptb_fx_div.F=$(2) -Ptb_fx_div.DIV_BITS=$(3)
+UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3)
+UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3)
+# the pipelined units take the vectors of the iterative ones: the same function
+UNITS_GEN_UNIT_sqrt_pipe := sqrt
+UNITS_GEN_UNIT_div_pipe  := div
 
 # Run a command with a timeout into a log and judge it:
 # $(call UNITS_JUDGE,command,log,name,expected PASS lines).
@@ -118,11 +135,11 @@ $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 define UNITS_ICARUS_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_GEN) $(2) $(3) $(4) $(5) $(6) $$@ > $$@.n
+	$(UNITS_GEN) $(or $(UNITS_GEN_UNIT_$(2)),$(2)) $(3) $(4) $(5) $(6) $$@ > $$@.n
 
-$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v $(addprefix $(UNITS_ROOT)/,$(UNITS_DEPS_$(2)))
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v $(addprefix $(UNITS_ROOT)/,$(UNITS_DEPS_$(2))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$^
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -161,9 +178,9 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 	@mkdir -p $$(dir $$@)
 	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $$@ > $$@.n
 
-$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS)))
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -o $$@ $$^
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -179,7 +196,7 @@ UNITS_EXH_DIR := $(UNITS_BUILD)/exhaustive_w12
 UNITS_EXH_BIN := $(UNITS_EXH_DIR)/exhaustive_units
 UNITS_EXH_SRC := $(UNITS_ROOT)/tb/exh_units.v $(UNITS_RTL) $(UNITS_ROOT)/tb/exhaustive_units.cpp $(UNITS_ROOT)/model/fixed.c
 
-$(UNITS_EXH_BIN): $(UNITS_EXH_SRC) $(UNITS_ROOT)/model/fixed.h
+$(UNITS_EXH_BIN): $(UNITS_EXH_SRC) $(UNITS_ROOT)/model/fixed.h $(UNITS_VH)
 	@mkdir -p $(UNITS_EXH_DIR)
 	$(UNITS_VERILATOR) --cc --exe --build -j 2 -Wall -I$(UNITS_ROOT)/rtl --x-assign fast --x-initial fast \
 	    --top-module exh_units -GW=12 -GF=6 -GLANES=$(UNITS_EXH_LANES) \
@@ -203,6 +220,8 @@ UNITS_LINT_PARAMS_avg  := "" "-GW=8"
 UNITS_LINT_PARAMS_mul  := "" "-GW=8 -GF=1" "-GW=8 -GF=6" "-GW=18 -GF=8"
 UNITS_LINT_PARAMS_sqrt := "" "-GW=8 -GSQRT_BITS=1" "-GW=8 -GSQRT_BITS=3" "-GW=32 -GSQRT_BITS=8" "-GW=9 -GSQRT_BITS=7"
 UNITS_LINT_PARAMS_div  := "" "-GW=8 -GF=1 -GDIV_BITS=1" "-GW=8 -GF=6 -GDIV_BITS=3" "-GW=32 -GF=30 -GDIV_BITS=8"
+UNITS_LINT_PARAMS_sqrt_pipe := $(UNITS_LINT_PARAMS_sqrt)
+UNITS_LINT_PARAMS_div_pipe  := $(UNITS_LINT_PARAMS_div)
 # the datapath testbenches (with the RTL under them), Verilator with --timing
 UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -GF=1 -GSQRT_BITS=1 -GDIV_BITS=1"
 

@@ -1,0 +1,102 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_defs.vh"
+
+/*
+ * fx_sqrt_pipe - the square root of fx_sqrt, pipelined: a new radicand every clock.
+ *
+ * Computes exactly what fx_sqrt (and fx_sqrt() of model/fixed.c) computes: the root of
+ * an unsigned 2W-bit radicand, rounded to nearest at the last resolved bit, saturated
+ * to 2^(W-1)-1. The algorithm is fx_sqrt's, its SQRT_BITS + 1 iterations unrolled into
+ * as many pipeline stages; the iteration itself is the one of fx_sqrt_step.vh, which
+ * fx_sqrt uses too, so the two cannot differ.
+ *
+ * Ports:   radicand  unsigned, 2W bits, sampled at every rising edge.
+ *          result    W bits (0 .. 2^(W-1)-1) and sat, as fx_sqrt's.
+ * Latency: a radicand sampled at edge e gives its result and sat after edge
+ *          e + SQRT_BITS + 1 (one load stage, then SQRT_BITS + 1 iteration stages,
+ *          the last storing the rounded result): the same as fx_sqrt's start-to-done.
+ * Throughput: one root per clock. No reset: a stage holds whatever entered it; the
+ *          caller keeps its own valid bits.
+ * Cost: SQRT_BITS + 1 subtracters of SQRT_BITS + 3 bits and, per stage, the partial
+ *       remainder, the root bits so far and the radicand bits still to come (the ones
+ *       that are constant are removed by synthesis).
+ */
+module fx_sqrt_pipe #(
+    parameter integer W         = 32,   // total width in bits, 8..32
+    parameter integer SQRT_BITS = W - 1 // root magnitude bits resolved, 1..W-1
+) (
+    input  wire           clk,
+    input  wire [2*W-1:0] radicand, // unsigned, 2W bits
+    output wire [W-1:0]   result,   // root, 0 .. 2^(W-1)-1
+    output wire           sat       // result was clamped to 2^(W-1)-1
+);
+
+    `STRAND_CHECK(W_must_be_8_to_32, W >= 8 && W <= 32, ("fx_sqrt_pipe: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(SQRT_BITS_must_be_1_to_W_minus_1, SQRT_BITS >= 1 && SQRT_BITS <= W - 1,
+                  ("fx_sqrt_pipe: SQRT_BITS must be 1..W-1 (W=%0d SQRT_BITS=%0d) in %m", W, SQRT_BITS))
+
+    localparam integer M   = W - 1;                 // magnitude bits of the root
+    localparam integer SB  = (SQRT_BITS < 1) ? 1 : (SQRT_BITS > M) ? M : SQRT_BITS; // clamped
+    localparam integer NIT = SB + 1;                // iterations: pipeline stages
+    localparam integer LSB = M - SB;                // weight of the last resolved bit
+    localparam integer XB  = (NIT < M) ? NIT : M;   // radicand bit pairs consumed
+    localparam integer XW  = 2 * XB;                // radicand bits carried
+    localparam integer AW  = SB + 1;                // partial remainder width
+    localparam integer TW  = SB + 3;                // trial comparison width
+
+`include "fx_sqrt_step.vh"
+
+    // stage s = 0 (the load) .. NIT-1 holds x (the radicand bits to come, top first),
+    // ac (the partial remainder), q (the root bits so far) and big (the root does not fit)
+    wire [XW-1:0]  x_s   [0:NIT-1];
+    wire [AW-1:0]  ac_s  [0:NIT-1];
+    wire [NIT-1:0] q_s   [0:NIT-1];
+    wire           big_s [0:NIT-1];
+
+    reg [XW-1:0] x0;
+    reg          big0;
+    always @(posedge clk) begin
+        x0   <= radicand[2*M-1 -: XW];
+        big0 <= |radicand[2*W-1 -: 2];
+    end
+    assign x_s[0]   = x0;
+    assign ac_s[0]  = {AW{1'b0}};
+    assign q_s[0]   = {NIT{1'b0}};
+    assign big_s[0] = big0;
+
+    genvar s;
+    generate
+        for (s = 1; s <= NIT; s = s + 1) begin : g_stage
+            wire [AW:0]    step   = sqrt_step(ac_s[s-1], x_s[s-1][XW-1 -: 2], q_s[s-1]);
+            wire [NIT-1:0] q_next = {q_s[s-1][NIT-2:0], step[AW]};
+            if (s < NIT) begin : g_iter
+                reg [XW-1:0]  x_q;
+                reg [AW-1:0]  ac_q;
+                reg [NIT-1:0] q_q;
+                reg           big_q;
+                always @(posedge clk) begin
+                    x_q   <= x_s[s-1] << 2;
+                    ac_q  <= step[AW-1:0];
+                    q_q   <= q_next;
+                    big_q <= big_s[s-1];
+                end
+                assign x_s[s]   = x_q;
+                assign ac_s[s]  = ac_q;
+                assign q_s[s]   = q_q;
+                assign big_s[s] = big_q;
+            end else begin : g_last
+                reg [W:0] fin_q;  // {sat, result}
+                always @(posedge clk) fin_q <= sqrt_result(q_next, big_s[s-1]);
+                assign {sat, result} = fin_q;
+            end
+        end
+    endgenerate
+
+    // With SQRT_BITS < W-2 the low radicand bits cannot change the rounded root.
+    wire unused_radicand = &{1'b0, radicand};
+
+endmodule
+
+`resetall

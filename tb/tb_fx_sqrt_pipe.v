@@ -1,0 +1,62 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+/*
+ * tb_fx_sqrt_pipe - self-checking testbench for rtl/fx_sqrt_pipe.v: values and latency.
+ *
+ * Reads the vectors of fx_sqrt (tb/gen_vectors.c, unit sqrt; record: flags {0,0,0,sat},
+ * radicand, y) and streams them back to back, a new radicand every clock; the result of
+ * the radicand sampled at edge e must be there after edge e + SQRT_BITS + 1, whatever
+ * came before and after it. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
+ * (exit status 1) on failure.
+ */
+module tb_fx_sqrt_pipe;
+
+    parameter integer W         = 32;      // width under test
+    parameter integer SQRT_BITS = W - 1;   // root bits resolved under test
+    parameter integer MAXN      = 1 << 18; // capacity of the vector memory
+
+    localparam integer FD  = 4 * ((W + 3) / 4);     // a W-bit field padded to hex digits
+    localparam integer RD  = 4 * ((2 * W + 3) / 4); // the 2W-bit radicand field
+    localparam integer RW  = 4 + RD + FD;           // record width
+    localparam integer LAT = SQRT_BITS + 2;         // cycles from a radicand driven to its result
+
+    reg [RW-1:0]    mem [0:MAXN-1];
+    reg [8*64-1:0]  name;
+    reg [8*256-1:0] file;
+    integer         n, c, v;
+
+    reg             clk = 1'b0;
+    reg [2*W-1:0]   radicand = {2*W{1'b0}};
+    wire [W-1:0]    result;
+    wire            sat;
+
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) dut (.clk(clk), .radicand(radicand), .result(result), .sat(sat));
+
+    always #5 clk = !clk;
+
+    initial begin
+        if (!$value$plusargs("name=%s", name)) name = "tb_fx_sqrt_pipe";
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
+            $display("FAIL %0s: needs +vectors=FILE and +n=1..%0d", name, MAXN);
+            $fatal(1);
+        end
+        $readmemh(file, mem, 0, n - 1);
+        // cycle c: drive vector c (sampled at the edge ending cycle c), check vector c - LAT
+        for (c = 0; c < n + LAT; c = c + 1) begin
+            @(negedge clk);
+            v = c - LAT;
+            if (v >= 0 && (result !== mem[v][0 +: W] || sat !== mem[v][RW-4])) begin
+                $display("FAIL %0s: vector %0d radicand %h: result %h sat %b, expected %h %b", name, v,
+                         mem[v][FD +: 2*W], result, sat, mem[v][0 +: W], mem[v][RW-4]);
+                $fatal(1);
+            end
+            radicand = c < n ? mem[c][FD +: 2*W] : {2*W{1'b0}};
+        end
+        $display("PASS %0s (%0d vectors, one a clock, latency %0d)", name, n, LAT);
+        $finish;
+    end
+endmodule
+
+`resetall
