@@ -1,5 +1,5 @@
 /*
- * scene.h - a scene: what to simulate and with which effects (design.md section 3).
+ * scene.h - a scene: what to simulate and with which effects.
  *
  * Scenes are INI files parsed by libinih and validated completely before anything
  * runs; sim/scenes/README.md documents every key. Values are kept in double, as

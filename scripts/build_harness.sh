@@ -12,6 +12,7 @@ scene=$1 out=$2 rtl=${3:-rtl}
 build=${BUILD:-build}
 root=$(pwd)
 case $rtl in /*) ;; *) rtl=$root/$rtl ;; esac
+case $out in /*) ;; *) out=$root/$out ;; esac
 mkdir -p "$out"
 # one build of a directory at a time (two runs may want the same harness at once)
 exec 9>"$out.lock"
@@ -30,9 +31,9 @@ if command -v ccache >/dev/null 2>&1; then
   objcache=(-MAKEFLAGS "OBJCACHE=ccache")
 fi
 verilator --cc --exe --build -j 2 -O3 --trace-fst --x-assign unique --x-initial unique "${objcache[@]}" \
-  -Mdir "$out/obj" --top-module sim_top -o "$root/$out/harness" \
-  -I"$root/$build/gen" -I"$root/$out" -I"$rtl" \
-  -CFLAGS "-O2 -I$root/model -I$root/$build/gen -I$root/$out $(pkg-config --cflags inih cairo)" \
+  -Mdir "$out/obj" --top-module sim_top -o "$out/harness" \
+  -I"$root/$build/gen" -I"$out" -I"$rtl" \
+  -CFLAGS "-O2 -I$root/model -I$root/$build/gen -I$out $(pkg-config --cflags inih cairo)" \
   -LDFLAGS "$root/$build/libstrand.a $(pkg-config --libs inih cairo) -lm" \
   "$root/tb/sim_top.v" $(for f in "$rtl"/*.v; do echo "$f"; done) "$root/tb/harness.cpp" >"$out/build.log" 2>&1 \
   || { cat "$out/build.log"; exit 1; }

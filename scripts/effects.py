@@ -671,7 +671,7 @@ def write_doc(o, rows, res, body_name, body):
       f"`{sources_digest(o.srcs)[:16]}`{git_note(o.rtl_dir)}.")
     w("")
     w("Every effect of `strand_core` sits behind a `generate` switch, so a scene pays only for the "
-      "effects it names (design.md section 3). This is each effect's price in cells and in cycles per frame, "
+      "effects it names. This is each effect's price in cells and in cycles per frame, "
       f"measured on one body: the {body_name} of [resources.md](resources.md), "
       + ", ".join(f"{n}={v}" for n, v in body.items())
       + f" ({body['M'] * body['K']} nodes), with no effect (the baseline) and with each effect.")

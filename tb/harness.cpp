@@ -198,7 +198,7 @@ bool Run::compare() {
     cyc_outputs m;
     cyc_get_outputs(&model_, &m);
     // (name, rtl, model) of every output; names are only formatted on a mismatch
-    uint64_t rtl[10 + 5 * CYC_MAX_UNITS], mod[10 + 5 * CYC_MAX_UNITS];
+    uint64_t rtl[12 + 5 * CYC_MAX_UNITS], mod[12 + 5 * CYC_MAX_UNITS];
     int n = 0;
     auto put = [&](uint64_t a, uint64_t b) { rtl[n] = a, mod[n++] = b; };
     put(top_->frame_done, m.frame_done);
@@ -211,6 +211,8 @@ bool Run::compare() {
     put(top_->nidx, m.nidx);
     put(top_->counter, m.counter);
     put(top_->rd_z, m.rd_z);
+    put(top_->busy, m.busy);
+    put(top_->irq, m.irq);
     for (int u = 0; u < hp_.m; u++) {
         put(lane(top_->wb_valid, u, 1), m.wb_valid[u]);
         put(lane(top_->wb_idx, u, hp_.iw), m.wb_idx[u]);
@@ -222,9 +224,9 @@ bool Run::compare() {
     for (int i = 0; i < n; i++) {
         r_.digest = (r_.digest ^ rtl[i]) * 1099511628211ull;
         if (rtl[i] == mod[i]) continue;
-        static const char *const names[] = {"frame_done", "rd_x", "rd_y", "phase", "fv", "fec", "uidx", "nidx", "counter", "rd_z"};
+        static const char *const names[] = {"frame_done", "rd_x", "rd_y", "phase", "fv", "fec", "uidx", "nidx", "counter", "rd_z", "busy", "irq"};
         static const char *const lanes[] = {"wb_valid", "wb_idx", "wb_x", "wb_y", "wb_z"};
-        std::string name = i < 10 ? names[i] : std::string(lanes[(i - 10) % 5]) + "[" + std::to_string((i - 10) / 5) + "]";
+        std::string name = i < 12 ? names[i] : std::string(lanes[(i - 12) % 5]) + "[" + std::to_string((i - 12) / 5) + "]";
         if (ok && !o_.quiet)
             std::printf("MISMATCH cycle %ld (phase %d, uidx %u, nidx %u, counter %u)\n", cyc_, m.phase, m.uidx, m.nidx, m.counter);
         if (!o_.quiet)
@@ -335,7 +337,12 @@ Result Run::go(int frames) {
         bool interrupted = false;
         for (uint32_t g = rng_.below(4); g > 0; g--) {
             noise(in);
+            // the host acknowledges the frame-done interrupt in about half the gaps
+            in.cfg_we = rng_.below(2);
+            in.cfg_addr = STRAND_REG_IRQ_ACK;
+            in.cfg_data = (uint32_t)rng_.next() & mask_;
             if (!cycle(in)) return r_;
+            in.cfg_we = false;
         }
         double m[3];
         bool down;
