@@ -17,6 +17,8 @@
  *
  * A substep (Verlet): spring force pass, Verlet (+ mouse) pass over all nodes,
  * `iterations` constraint passes, ground pass. A frame samples the mouse first.
+ * A constraint pass takes the nodes (centred rule) or edges (pairwise) in the scene's
+ * order: serial, or redblack (colour by colour, scene.h).
  */
 
 static bool P(node_pinned)(const SIM *s, int i) { return s->sc->pinned[i]; }
@@ -331,9 +333,12 @@ void P(substep)(SIM *s)
     }
     if (sc->en_constraints)
         for (int it = 0; it < sc->iterations; it++) {
-            if (sc->rule == RULE_CENTRED)
+            if (sc->rule == RULE_CENTRED && sc->order == ORDER_REDBLACK) /* even nodes, then odd */
+                for (int colour = 0; colour < 2; colour++)
+                    for (int i = colour; i < s->n; i += 2) P(centred_node)(s, i);
+            else if (sc->rule == RULE_CENTRED)
                 for (int i = 0; i < s->n; i++) P(centred_node)(s, i);
-            else
+            else /* scene_set_order() put the edges in the pass's order */
                 for (int e = 0; e < sc->n_edges; e++)
                     if (sc->edges[e].kind != EDGE_SPRING) P(pair_edge)(s, e);
         }

@@ -272,7 +272,7 @@ static bool handle_graph_item(parser *p, const char *key, const char *value)
         p->edge_lines = xrealloc(p->edge_lines, (size_t)p->cap_edges * sizeof *p->edge_lines);
         p->edge_rest_given = xrealloc(p->edge_rest_given, (size_t)p->cap_edges * sizeof *p->edge_rest_given);
     }
-    sc->edges[sc->n_edges] = (scene_edge){a, b, (edge_kind)kind, rest};
+    sc->edges[sc->n_edges] = (scene_edge){a, b, (edge_kind)kind, rest, 0, 0};
     p->edge_rest_given[sc->n_edges] = n == 4;
     p->edge_lines[sc->n_edges++] = p->line;
     return true;
@@ -407,6 +407,13 @@ static int handler(void *user, const char *section, const char *key, const char 
             int i;
             if (!parse_choice(p, key, value, c, &i)) return 0;
             sc->rule = (constraint_rule)i;
+            return 1;
+        }
+        if (!strcmp(key, "order")) {
+            static const char *const c[] = {"serial", "redblack", 0};
+            int i;
+            if (!parse_choice(p, key, value, c, &i)) return 0;
+            sc->order = (constraint_order)i;
             return 1;
         }
         break;
@@ -546,9 +553,9 @@ static bool build_chain(parser *p)
         if (!sc->edges) return fail_at(p, 1, "out of memory");
         int e = 0;
         if (sc->en_constraints)
-            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, sc->chain_rest};
+            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, sc->chain_rest, 0, 0};
         if (sc->en_springs)
-            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, sc->chain_rest};
+            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, sc->chain_rest, 0, 0};
     }
     return true;
 }
@@ -716,7 +723,14 @@ static bool finish(parser *p)
     for (int i = 0; i < sc->n_nodes; i++)
         if (sc->pinned[i]) memcpy(sc->prev[i], sc->pos[i], sizeof sc->prev[i]);
 
-    if (sc->number == NUMBER_FIXED) return check_fits(p);
+    if (sc->number == NUMBER_FIXED && !check_fits(p)) return false;
+    for (int e = 0; e < sc->n_edges; e++) sc->edges[e].src = e;
+    if (scene_set_order(sc, sc->order, p->err) < 0) {
+        /* the message names no line: the order key's (or the first line) */
+        char msg[SCENE_ERR_LEN];
+        snprintf(msg, sizeof msg, "%s", p->err);
+        return fail_at(p, blame(p, S_CONSTRAINTS, "order"), "%s", msg);
+    }
     return true;
 }
 
@@ -841,4 +855,56 @@ void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down)
         memcpy(pos, sc->events[e].pos, 3 * sizeof(double));
         *down = sc->events[e].down;
     }
+}
+
+static bool is_constraint(const scene_edge *e) { return e->kind != EDGE_SPRING; }
+
+/* Sorting key: constraint edges by (colour, scene order), springs after them in scene order. */
+static int edge_order_cmp(const void *a, const void *b)
+{
+    const scene_edge *x = a, *y = b;
+    int kx = !is_constraint(x), ky = !is_constraint(y);
+    if (kx != ky) return kx - ky;
+    if (x->colour != y->colour) return x->colour - y->colour;
+    return x->src - y->src;
+}
+
+static int src_cmp(const void *a, const void *b) { return ((const scene_edge *)a)->src - ((const scene_edge *)b)->src; }
+
+int scene_set_order(scene *sc, constraint_order order, char *err)
+{
+    sc->order = order;
+    sc->n_colours = 1;
+    if (sc->n_edges == 0) return 1;
+    /* back to the scene's order; the colours are made in it */
+    qsort(sc->edges, (size_t)sc->n_edges, sizeof *sc->edges, src_cmp);
+    for (int e = 0; e < sc->n_edges; e++) sc->edges[e].colour = 0;
+    if (order == ORDER_SERIAL) return 1;
+    uint64_t *used = calloc((size_t)sc->n_nodes, sizeof *used); /* colours at each node */
+    if (!used) {
+        snprintf(err, SCENE_ERR_LEN, "out of memory");
+        return -1;
+    }
+    int colours = 1;
+    for (int e = 0; e < sc->n_edges; e++) {
+        scene_edge *ed = &sc->edges[e];
+        if (!is_constraint(ed)) continue;
+        uint64_t taken = used[ed->a] | used[ed->b];
+        int c = 0;
+        while (c < SCENE_MAX_COLOURS && (taken >> c & 1)) c++;
+        if (c == SCENE_MAX_COLOURS) {
+            snprintf(err, SCENE_ERR_LEN, "order = redblack: the edge %d-%d needs a colour beyond %d (a node with that many constraint edges)",
+                     ed->a, ed->b, SCENE_MAX_COLOURS - 1);
+            free(used);
+            return -1;
+        }
+        ed->colour = c;
+        used[ed->a] |= 1ull << c;
+        used[ed->b] |= 1ull << c;
+        if (c + 1 > colours) colours = c + 1;
+    }
+    free(used);
+    qsort(sc->edges, (size_t)sc->n_edges, sizeof *sc->edges, edge_order_cmp);
+    sc->n_colours = colours;
+    return colours;
 }

@@ -28,6 +28,11 @@ extern "C" {
 typedef enum { BODY_CHAIN, BODY_GRAPH } body_kind;
 typedef enum { EDGE_ROD, EDGE_STRUT, EDGE_SPRING } edge_kind;
 typedef enum { RULE_CENTRED, RULE_PAIRWISE } constraint_rule;
+/* The order of a constraint pass: serial (node by node, link by link; each reads its
+   just-updated neighbour) or redblack (chains: even nodes or links, then odd; graphs:
+   the edges of a greedy edge colouring, colour by colour). Within a colour no two
+   constraints share a node, so a pipeline may have a whole colour in flight. */
+typedef enum { ORDER_SERIAL, ORDER_REDBLACK } constraint_order;
 typedef enum { INTEGRATOR_VERLET, INTEGRATOR_EULER } integrator_kind;
 typedef enum { MOUSE_IMPULSE, MOUSE_GRAB } mouse_mode;
 typedef enum { NUMBER_FIXED, NUMBER_DOUBLE } number_kind;
@@ -36,6 +41,8 @@ typedef struct {
     int a, b;       /* node indices */
     edge_kind kind; /* rods and struts are distance constraints, springs are forces */
     double rest;    /* rest length */
+    int src;        /* its index in the scene's own order (scene_set_order sorts the edges) */
+    int colour;     /* redblack: its colour (constraint edges; 0 for springs and when serial) */
 } scene_edge;
 
 typedef struct {
@@ -82,6 +89,8 @@ typedef struct {
     int n_events;
     mouse_event *events;
     constraint_rule rule;
+    constraint_order order;
+    int n_colours;  /* colours of the constraint edges (1 when serial or without edges) */
     double ks, kd;
     bool kd_per_step; /* damper acts on per-step velocity x - x- (reference 001) */
     int ground_axis;  /* 0, 1, 2 */
@@ -97,6 +106,17 @@ typedef struct {
  */
 bool scene_load(scene *sc, const char *path, char *err);
 void scene_free(scene *sc);
+
+/*
+ * Put the constraint edges (rods and struts) in the order a constraint pass takes them:
+ * the scene's own order (serial), or colour by colour of a greedy edge colouring made in
+ * the scene's order, each colour in the scene's order (redblack: a chain's links then
+ * come even links first). Springs keep the scene's order. Returns the number of colours
+ * (1 when serial), or -1 and a message without file or line in err (SCENE_ERR_LEN
+ * bytes) when the colouring needs more than SCENE_MAX_COLOURS colours.
+ */
+#define SCENE_MAX_COLOURS 64
+int scene_set_order(scene *sc, constraint_order order, char *err);
 
 /* Substep length dt / substeps. */
 static inline double scene_h(const scene *sc) { return sc->dt / sc->substeps; }

@@ -38,7 +38,7 @@ static const char *usage_main =
     "'strand COMMAND --help' describes each command's options.\n";
 
 static const char *usage_check =
-    "usage: strand check SCENE [--auto-substeps MAX]\n"
+    "usage: strand check SCENE [--auto-substeps MAX] [--order serial|redblack]\n"
     "Validate SCENE; print its summary and its stability bound, or 'file:line: message'\n"
     "and exit 2. A scene whose springs cross the bound gets a warning on stderr.\n"
     "  --auto-substeps MAX  also print the fewest substeps (up to MAX) that meet the bound\n"
@@ -46,6 +46,7 @@ static const char *usage_check =
 
 static const char *usage_run =
     "usage: strand run SCENE [--frames N] [--format fixed|double] [--csv FILE] [--hex FILE] [--png DIR]\n"
+    "                 [--auto-substeps MAX] [--order serial|redblack]\n"
     "  --frames N       frames to run (default: the scene's 'frames')\n"
     "  --format F       fixed (the scene's [format], or Q16.16) or double\n"
     "  --csv FILE       positions at every frame end: frame,node,x,y[,z]\n"
@@ -53,18 +54,20 @@ static const char *usage_run =
     "                   x y [z] as W-bit hex words (testbench vectors)\n"
     "  --png DIR        one picture per frame, DIR/frame_00001.png ...\n"
     "  --auto-substeps MAX  run with the fewest substeps (up to MAX) that meet the springs'\n"
-    "                   stability bound with a safety factor of 2 on the step\n";
+    "                   stability bound with a safety factor of 2 on the step\n"
+    "  --order O        the constraint pass's order instead of the scene's: serial, or\n"
+    "                   redblack (even nodes or links first; graphs: by edge colour)\n";
 
-static const char *usage_compare = "usage: strand compare SCENE [--frames N] [--auto-substeps MAX]\n"
+static const char *usage_compare = "usage: strand compare SCENE [--frames N] [--auto-substeps MAX] [--order serial|redblack]\n"
                                    "Run the scene in fixed point and in double; print the RMS and largest position\n"
                                    "error (in rest lengths) and the largest stretch of each.\n"
-                                   "  --auto-substeps MAX  as for 'strand run'\n";
+                                   "  --auto-substeps MAX, --order O  as for 'strand run'\n";
 
-static const char *usage_hwgen = "usage: strand hwgen SCENE DIR [--frames N]\n"
+static const char *usage_hwgen = "usage: strand hwgen SCENE DIR [--frames N] [--order serial|redblack]\n"
                                  "Write DIR/params.vh, config.hex, mouse.hex and expected.hex: what the RTL build\n"
                                  "and its frame-level testbench need for SCENE. Exit 2 if the RTL cannot run SCENE.\n";
 
-static const char *usage_info = "usage: strand info SCENE [--json | --vflags]\n"
+static const char *usage_info = "usage: strand info SCENE [--json | --vflags] [--order serial|redblack]\n"
                                 "Print the strand_core build SCENE needs (every parameter, as 'strand hwgen' derives it),\n"
                                 "its derived widths and its cycle counts (model/timing.c). With --json, one JSON object\n"
                                 "for scripts: params, derived, timing, and rtl (false with why when the RTL cannot run\n"
@@ -90,11 +93,20 @@ static bool parse_count(const char *s, int *out)
     return true;
 }
 
+/* --order's value: a constraint_order, or -1 */
+static int parse_order(const char *s)
+{
+    if (!strcmp(s, "serial")) return ORDER_SERIAL;
+    if (!strcmp(s, "redblack")) return ORDER_REDBLACK;
+    return -1;
+}
+
 typedef struct {
     int frames;       /* -1: the scene's */
     int format;       /* -1: the scene's */
     const char *csv, *hex, *png;
     int auto_substeps; /* 0: off; else the most substeps --auto-substeps may pick */
+    int order;         /* -1: the scene's; else --order's constraint_order */
     bool help;
 } options;
 
@@ -104,12 +116,12 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
     static const struct option longopts[] = {
         {"frames", required_argument, 0, 'f'}, {"format", required_argument, 0, 'F'}, {"csv", required_argument, 0, 'c'},
         {"hex", required_argument, 0, 'x'},    {"png", required_argument, 0, 'p'},    {"help", no_argument, 0, 'h'},
-        {"auto-substeps", required_argument, 0, 'a'},
+        {"auto-substeps", required_argument, 0, 'a'}, {"order", required_argument, 0, 'o'},
         {0, 0, 0, 0},
     };
     int c;
     memset(o, 0, sizeof *o);
-    o->frames = o->format = -1;
+    o->frames = o->format = o->order = -1;
     opterr = 0;
     optind = 1;
     /* the leading ':' makes a missing value ':' rather than '?' */
@@ -148,6 +160,12 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
                 return NULL;
             }
             break;
+        case 'o':
+            if ((o->order = parse_order(optarg)) < 0) {
+                *rc = bad_arg(cmd, "--order: '%s' is not 'serial' or 'redblack'", optarg);
+                return NULL;
+            }
+            break;
         case 'c': o->csv = optarg; break;
         case 'x': o->hex = optarg; break;
         case 'p': o->png = optarg; break;
@@ -164,11 +182,17 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
     return argv[optind];
 }
 
-static bool load(const char *path, scene *sc)
+/* Load a scene; order >= 0 (--order) replaces the scene's constraint order. */
+static bool load(const char *path, scene *sc, int order)
 {
     char err[SCENE_ERR_LEN];
     if (!scene_load(sc, path, err)) {
         fprintf(stderr, "%s\n", err);
+        return false;
+    }
+    if (order >= 0 && scene_set_order(sc, (constraint_order)order, err) < 0) {
+        fprintf(stderr, "%s:1: --order: %s\n", path, err);
+        scene_free(sc);
         return false;
     }
     return true;
@@ -233,12 +257,12 @@ static int cmd_check(int argc, char **argv)
     int rc = 0;
     scene sc;
     char fmtbuf[96], effects[160];
-    const char *path = parse_options("check", argc, argv, &o, "a", &rc);
+    const char *path = parse_options("check", argc, argv, &o, "ao", &rc);
     if (!path) {
         if (o.help) fputs(usage_check, stdout);
         return rc;
     }
-    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (!load(path, &sc, o.order)) return EXIT_BAD_INPUT;
     printf("ok %s: %s %dD, %d nodes (%d units x %d), %d edges, %s, %d frames x %d substeps x %d iterations, %s, effects: %s\n", sc.name,
            sc.body == BODY_CHAIN ? "chain" : "graph", sc.dim, sc.n_nodes, sc.units, sc.nodes_per_unit, sc.n_edges,
            format_name(sc.number, &sc.fmt, fmtbuf, sizeof fmtbuf), sc.frames, sc.substeps, sc.iterations,
@@ -319,12 +343,12 @@ static int cmd_run(int argc, char **argv)
     number_kind kind;
     char csv_tmp[1100], hex_tmp[1100], fmtbuf[96];
     bool ok;
-    const char *path = parse_options("run", argc, argv, &o, "fFcxpa", &rc);
+    const char *path = parse_options("run", argc, argv, &o, "fFcxpao", &rc);
     if (!path) {
         if (o.help) fputs(usage_run, stdout);
         return rc;
     }
-    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (!load(path, &sc, o.order)) return EXIT_BAD_INPUT;
     if (o.auto_substeps && !apply_auto_substeps("run", &sc, o.auto_substeps)) {
         scene_free(&sc);
         return EXIT_BAD_INPUT;
@@ -394,12 +418,12 @@ static int cmd_compare(int argc, char **argv)
     double sum2 = 0, worst = 0, stretch_fx = 0, stretch_dbl = 0, scale;
     long samples = 0;
     char fmtbuf[96];
-    const char *path = parse_options("compare", argc, argv, &o, "fa", &rc);
+    const char *path = parse_options("compare", argc, argv, &o, "fao", &rc);
     if (!path) {
         if (o.help) fputs(usage_compare, stdout);
         return rc;
     }
-    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (!load(path, &sc, o.order)) return EXIT_BAD_INPUT;
     if (o.auto_substeps && !apply_auto_substeps("compare", &sc, o.auto_substeps)) {
         scene_free(&sc);
         return EXIT_BAD_INPUT;
@@ -454,11 +478,15 @@ static int cmd_hwgen(int argc, char **argv)
     scene sc;
     char err[SCENE_ERR_LEN];
     const char *pos[2] = {NULL, NULL};
-    int npos = 0, frames = -1;
+    int npos = 0, frames = -1, order = -1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             fputs(usage_hwgen, stdout);
             return 0;
+        } else if (!strcmp(argv[i], "--order")) {
+            if (i + 1 >= argc || (order = parse_order(argv[i + 1])) < 0)
+                return bad_arg("hwgen", "--order: '%s' is not 'serial' or 'redblack'", i + 1 < argc ? argv[i + 1] : "");
+            i++;
         } else if (!strcmp(argv[i], "--frames")) {
             if (i + 1 >= argc || !parse_count(argv[i + 1], &frames))
                 return bad_arg("hwgen", "--frames: '%s' is not a frame count (0..100000000)", i + 1 < argc ? argv[i + 1] : "");
@@ -472,7 +500,7 @@ static int cmd_hwgen(int argc, char **argv)
         }
     }
     if (npos < 2) return bad_arg("hwgen", "%s", "needs SCENE and DIR");
-    if (!load(pos[0], &sc)) return EXIT_BAD_INPUT;
+    if (!load(pos[0], &sc, order)) return EXIT_BAD_INPUT;
     if (hw_check(&sc, err, sizeof err)) {
         fprintf(stderr, "%s\n", err);
         scene_free(&sc);
@@ -493,10 +521,15 @@ static int cmd_info(int argc, char **argv)
     char err[SCENE_ERR_LEN];
     const char *path = NULL;
     bool json = false, vflags = false;
+    int order = -1;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
             fputs(usage_info, stdout);
             return 0;
+        } else if (!strcmp(argv[i], "--order")) {
+            if (i + 1 >= argc || (order = parse_order(argv[i + 1])) < 0)
+                return bad_arg("info", "--order: '%s' is not 'serial' or 'redblack'", i + 1 < argc ? argv[i + 1] : "");
+            i++;
         } else if (!strcmp(argv[i], "--json")) {
             json = true;
         } else if (!strcmp(argv[i], "--vflags")) {
@@ -510,7 +543,7 @@ static int cmd_info(int argc, char **argv)
         }
     }
     if (!path) return bad_arg("info", "%s", "needs SCENE");
-    if (!load(path, &sc)) return EXIT_BAD_INPUT;
+    if (!load(path, &sc, order)) return EXIT_BAD_INPUT;
     hw_params hp;
     hw_params_of(&sc, &hp);
     const char *why = hw_check(&sc, err, sizeof err);

@@ -174,6 +174,45 @@ static void test_chain_layout_and_defaults(void **state)
     scene_free(&sc);
 }
 
+/* order = redblack: a chain's links even then odd, a graph's edges by a greedy colouring,
+   springs untouched; serial keeps the scene's order; a bad value names its line. */
+static void test_constraint_order(void **state)
+{
+    scene sc;
+    char err[SCENE_ERR_LEN];
+    (void)state;
+    expect_error(TIME CHAIN "[constraints]\norder = random\n", 9, "'random' is not one of: serial, redblack");
+    assert_true(scene_load(&sc, write_scene(TIME CHAIN "[constraints]\nrule = pairwise\norder = redblack\n[springs]\nks = 1\n"), err));
+    assert_int_equal(sc.order, ORDER_REDBLACK);
+    assert_int_equal(sc.n_colours, 2);
+    assert_int_equal(sc.n_edges, 10);
+    static const int links[5] = {0, 2, 4, 1, 3}; /* link i joins nodes i and i + 1 */
+    for (int e = 0; e < 5; e++) {
+        assert_int_equal(sc.edges[e].a, links[e]);
+        assert_int_equal(sc.edges[e].kind, EDGE_ROD);
+        assert_int_equal(sc.edges[e].colour, e < 3 ? 0 : 1);
+        assert_int_equal(sc.edges[5 + e].a, e); /* the springs keep their order */
+        assert_int_equal(sc.edges[5 + e].kind, EDGE_SPRING);
+    }
+    /* back to serial: the scene's order */
+    assert_int_equal(scene_set_order(&sc, ORDER_SERIAL, err), 1);
+    for (int e = 0; e < 10; e++) assert_int_equal(sc.edges[e].src, e);
+    scene_free(&sc);
+    /* a triangle and a tail: three colours; no two edges of a colour share a node */
+    assert_true(scene_load(&sc, write_scene(TIME "[graph]\nnode = 0 0\nnode = 1 0\nnode = 0 1\nnode = 2 2\n"
+                                            "edge = 0 1 rod\nedge = 1 2 spring\nedge = 1 2 rod\nedge = 2 0 strut\nedge = 2 3 rod\n"
+                                            "[constraints]\norder = redblack\n[springs]\nks = 1\n"), err));
+    assert_int_equal(sc.n_colours, 3);
+    static const int src[5] = {0, 4, 2, 3, 1}; /* colours 0 (0-1, 2-3), 1 (1-2), 2 (2-0); then the spring */
+    for (int e = 0; e < 5; e++) assert_int_equal(sc.edges[e].src, src[e]);
+    for (int e = 0; e < 4; e++)
+        for (int f = e + 1; f < 4; f++)
+            if (sc.edges[e].colour == sc.edges[f].colour)
+                assert_false(sc.edges[e].a == sc.edges[f].a || sc.edges[e].a == sc.edges[f].b || sc.edges[e].b == sc.edges[f].a ||
+                             sc.edges[e].b == sc.edges[f].b);
+    scene_free(&sc);
+}
+
 static void test_shipped_scenes_load(void **state)
 {
     static const char *const names[] = {"ref000_rope", "hanging_rope", "pendulum", "ref001_video1", "ref001_video2", "ref001_video3", "ref001_video4",
@@ -201,6 +240,7 @@ int main(void)
         cmocka_unit_test(test_missing_file),            cmocka_unit_test(test_chain_layout_and_defaults),
         cmocka_unit_test(test_nul_byte),
         cmocka_unit_test(test_shipped_scenes_load),
+        cmocka_unit_test(test_constraint_order),
     };
     return cmocka_run_group_tests_name("scene files", tests, NULL, NULL);
 }
