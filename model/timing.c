@@ -11,6 +11,13 @@ long hw_toward_latency(const hw_params *hp)
     return hp->sqrt_bits + hp->div_bits + 2L * hp->dim + 10;
 }
 
+long hw_toward_pipe_latency(const hw_params *hp)
+{
+    /* toward_pipe.v: d, the squares, their sum, the root (SQRT_BITS + 2), the divide
+       (DIV_BITS + 2), the products, their rounding, T, the output register */
+    return hp->sqrt_bits + hp->div_bits + 11L;
+}
+
 long hw_spring_latency(const hw_params *hp)
 {
     /* spring_force.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline),

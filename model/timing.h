@@ -12,6 +12,8 @@ extern "C" {
 
 /* toward.v: start to done (the distance datapath of the constraints). */
 long hw_toward_latency(const hw_params *hp);
+/* toward_pipe.v: an operation on its inputs in cycle 0 is on its outputs in this cycle. */
+long hw_toward_pipe_latency(const hw_params *hp);
 /* spring_force.v: start to done. */
 long hw_spring_latency(const hw_params *hp);
 /* One constraint pass (chain_sequencer or pair_sequencer), start to done, without the start cycle. */

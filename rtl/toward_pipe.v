@@ -1,0 +1,189 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_defs.vh"
+
+/*
+ * toward_pipe - toward, pipelined: a new (P, C, rest) every clock, its result a fixed
+ * number of cycles later.
+ *
+ * Computes exactly what toward computes (and model/engine_body.h toward() and the core
+ * of pair_edge()): with d = C - P (saturating, per axis)
+ *     len = fx_sqrt(d.x^2 + d.y^2 [+ d.z^2])   the exact 2W-bit sum of exact squares
+ *     r   = fx_div(rest, len)
+ *     T   = P + round(d * r)          excess = 0 (the centred rule's point)
+ *     T   = d - round(d * r)          excess = 1 (the pairwise rule's excess)
+ * ok = 0 when len = 0 (the divider's divide-by-zero flag): the caller skips T.
+ *
+ * Algorithm: the root and the divider are fx_sqrt_pipe and fx_div_pipe, the
+ * restoring digit-by-digit root and divide of fx_sqrt and fx_div unrolled into one
+ * stage per resolved bit (so SQRT_BITS and DIV_BITS stay the accuracy knobs, and the
+ * results are those of the serial datapath bit for bit). Every other step has a
+ * stage of its own, so no path holds more than one W x W multiply, one 2W-bit sum,
+ * one root or divide stage, the rounding or one W-bit add. The multipliers are not
+ * shared: DIM for the squares, DIM for the products.
+ *
+ * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
+ *   1 d = C - P            2 the squares           3 their sum (the radicand)
+ *   4 .. SQRT_BITS + 5     the root (fx_sqrt_pipe)
+ *   SQRT_BITS + 6 ..       the quotient (fx_div_pipe)
+ *   SQRT_BITS + DIV_BITS + 8   the products d * r      + 9  their rounding
+ *   SQRT_BITS + DIV_BITS + 10  T                        + 11 on the outputs
+ * LATENCY = SQRT_BITS + DIV_BITS + 11 (model/timing.c hw_toward_pipe_latency): an
+ * operation on the inputs in cycle 0 has out_valid, out_t, out_ok and out_tag in cycle
+ * LATENCY. Throughput one operation per clock; no operation waits for another.
+ *
+ * P, d, rest and the caller's tag ride beside the root and the divider in delay_line
+ * rings (LUT or block RAM), not in a register per stage.
+ *
+ * Ports: p, c are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W); rest unsigned
+ * Q(W-F).F; tag: TAG_W bits the caller gets back with the result. Only the valid bits
+ * are reset.
+ */
+module toward_pipe #(
+    parameter integer W         = 32,
+    parameter integer F         = 16,
+    parameter integer SQRT_BITS = W - 1,
+    parameter integer DIV_BITS  = W - 1,
+    parameter integer DIM       = 2,
+    parameter integer TAG_W     = 1,
+    parameter integer BLOCK_MIN = 64      // delay rings: strand_ram's block RAM threshold
+) (
+    input  wire             clk,
+    input  wire             reset,        // synchronous, active high: the valid bits
+    input  wire             in_valid,
+    input  wire             in_excess,    // 0: T = P + d*r, 1: T = d - d*r
+    input  wire [DIM*W-1:0] in_p,
+    input  wire [DIM*W-1:0] in_c,
+    input  wire [W-1:0]     in_rest,
+    input  wire [TAG_W-1:0] in_tag,
+    output wire             out_valid,
+    output reg  [DIM*W-1:0] out_t,
+    output reg              out_ok,       // 0: zero length, no direction
+    output reg  [TAG_W-1:0] out_tag
+);
+
+    `STRAND_CHECK(toward_pipe_W, W >= 8 && W <= 32, ("toward_pipe: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(toward_pipe_DIM, DIM == 2 || DIM == 3, ("toward_pipe: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
+
+    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 11;
+    localparam integer T_DIV   = SQRT_BITS + 6;             // cycle the divider's operands are on its inputs
+    localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 8;  // cycle the quotient is there
+    localparam integer SIDE_W  = TAG_W + 1 + 2 * DIM * W;   // tag, excess, P, d
+
+    // ---- the valid bits: bit i is the operation in cycle i + 1 ----
+    reg [LATENCY-1:0] v_q;
+    always @(posedge clk)
+        if (reset) v_q <= {LATENCY{1'b0}};
+        else v_q <= {v_q[LATENCY-2:0], in_valid};
+    assign out_valid = v_q[LATENCY-1];
+
+    // ---- cycle 1: d = C - P ----
+    reg [DIM*W-1:0] p1, c1;
+    reg [W-1:0]     rest1;
+    reg [TAG_W-1:0] tag1;
+    reg             excess1;
+    always @(posedge clk) begin
+        p1      <= in_p;
+        c1      <= in_c;
+        rest1   <= in_rest;
+        tag1    <= in_tag;
+        excess1 <= in_excess;
+    end
+    wire [DIM*W-1:0] d1;
+    genvar k;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_d
+            /* verilator lint_off PINCONNECTEMPTY */
+            fx_add #(.W(W), .SUB(1)) u_d (.sub(1'b1), .a(c1[k*W +: W]), .b(p1[k*W +: W]), .y(d1[k*W +: W]), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+        end
+    endgenerate
+
+    // ---- cycle 2: the squares; P, d, rest and the tag enter their rings ----
+    reg [DIM*W-1:0] d2, p2;
+    reg [W-1:0]     rest2;
+    reg [TAG_W-1:0] tag2;
+    reg             excess2;
+    always @(posedge clk) begin
+        d2      <= d1;
+        p2      <= p1;
+        rest2   <= rest1;
+        tag2    <= tag1;
+        excess2 <= excess1;
+    end
+    wire [DIM*2*W-1:0] sq2;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_sq
+            /* verilator lint_off PINCONNECTEMPTY */
+            // the exact product only: a square is summed unrounded
+            fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_sq (.a(d2[k*W +: W]), .b(d2[k*W +: W]), .y(), .sat(), .prod(sq2[k*2*W +: 2*W]));
+            /* verilator lint_on PINCONNECTEMPTY */
+        end
+    endgenerate
+    wire [W-1:0]      rest_div;
+    wire [SIDE_W-1:0] side;
+    delay_line #(.WIDTH(W), .DELAY(T_DIV - 2), .BLOCK_MIN(BLOCK_MIN)) u_rest_ring (
+        .clk(clk), .reset(reset), .in(rest2), .out(rest_div));
+    delay_line #(.WIDTH(SIDE_W), .DELAY(T_MUL - 2), .BLOCK_MIN(BLOCK_MIN)) u_side_ring (
+        .clk(clk), .reset(reset), .in({tag2, excess2, p2, d2}), .out(side));
+
+    // ---- cycle 3: the radicand (each square <= 2^(2W-2): three fit 2W bits) ----
+    reg [DIM*2*W-1:0] sq3;
+    always @(posedge clk) sq3 <= sq2;
+    reg [2*W-1:0] radicand4;
+    always @(posedge clk)
+        radicand4 <= sq3[0 +: 2*W] + sq3[2*W +: 2*W] + (DIM == 3 ? sq3[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
+
+    // ---- cycles 4 .. : the root, then the quotient ----
+    wire [W-1:0] root, quot;
+    wire         dz;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // saturation flags: the saturated value is the result
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand4), .result(root), .sat());
+    fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
+        .clk(clk), .num(rest_div), .den(root), .result(quot), .div_by_zero(dz), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // ---- cycle T_MUL: the products d * r; then their rounding; then T ----
+    wire [TAG_W-1:0] tag_m    = side[SIDE_W-1 -: TAG_W];
+    wire             excess_m = side[2*DIM*W];
+    wire [DIM*W-1:0] p_m      = side[DIM*W +: DIM*W];
+    wire [DIM*W-1:0] d_m      = side[0 +: DIM*W];
+    reg  [DIM*2*W-1:0] prod9;
+    reg  [DIM*W-1:0] p9, d9, p10, d10, round10;
+    reg  [TAG_W-1:0] tag9, tag10;
+    reg              excess9, excess10, dz9, dz10;
+    wire [DIM*2*W-1:0] prod_m;
+    wire [DIM*W-1:0] round9, t10;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_prod
+            /* verilator lint_off PINCONNECTEMPTY */
+            fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(d_m[k*W +: W]), .b(quot), .y(), .sat(), .prod(prod_m[k*2*W +: 2*W]));
+            fx_round #(.W(W), .F(F)) u_round (.prod(prod9[k*2*W +: 2*W]), .y(round9[k*W +: W]), .sat());
+            fx_add #(.W(W), .SUB(-1)) u_t (.sub(excess10), .a(excess10 ? d10[k*W +: W] : p10[k*W +: W]),
+                                          .b(round10[k*W +: W]), .y(t10[k*W +: W]), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+        end
+    endgenerate
+    always @(posedge clk) begin
+        prod9    <= prod_m;
+        p9       <= p_m;
+        d9       <= d_m;
+        tag9     <= tag_m;
+        excess9  <= excess_m;
+        dz9      <= dz;
+        round10  <= round9;
+        p10      <= p9;
+        d10      <= d9;
+        tag10    <= tag9;
+        excess10 <= excess9;
+        dz10     <= dz9;
+        out_t    <= t10;
+        out_ok   <= !dz10;
+        out_tag  <= tag10;
+    end
+
+endmodule
+
+`resetall
