@@ -143,9 +143,10 @@ HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 
             hard_stiff_k1000:200 hard_stiff_k10000:200 hard_ground_impact hard_mouse_grab:2000 \
             hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
 
-# make test: the RTL and reference scenes, the planted faults, random initial values, 50 random scenes
+# make test: the RTL and reference scenes (each also in the red/black order: a chain's pipelined
+# build), the planted faults, random initial values, 50 random scenes
 test-lockstep: $(STRAND) $(GEN_HDRS)
-	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --faults --reset-seeds 3
+	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3
 
 lockstep-hard: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
@@ -180,7 +181,7 @@ test-scenes: $(STRAND)
 # ---- the RTL against the frame engine, every frame, bit for bit ----
 
 test-rtl-frames: $(STRAND) $(GEN_HDRS)
-	@rc=0; for s in $(RTL_SCENES); do scripts/top_frames.sh $$s || rc=1; done; exit $$rc
+	@rc=0; for s in $(RTL_SCENES); do for o in serial redblack; do scripts/top_frames.sh $$s "" $$o || rc=1; done; done; exit $$rc
 
 # ---- lint ----
 
@@ -189,11 +190,12 @@ lint-c: $(GEN_HDRS)
 	@echo "lint-c: clean (-std=c11 -pedantic -Wall -Wextra -Werror)"
 
 # strand_core is linted with its defaults and with the build of every scene the RTL runs in
-# make test ('strand info SCENE --vflags': the parameters hwgen derives), each build once.
+# make test, in both constraint orders ('strand info SCENE --vflags [--order redblack]': the
+# parameters hwgen derives), each build once.
 LINT_SCENES := $(sort $(RTL_SCENES) $(foreach s,$(LOCKSTEP_SCENES),$(firstword $(subst :, ,$(s)))))
 lint-rtl: $(GEN_HDRS) $(STRAND)
 	@verilator --lint-only -Wall -I$(GEN) -Irtl $(TOP_SRC) --top-module strand_core
-	@for s in $(LINT_SCENES); do $(STRAND) info $$s --vflags || exit 1; done | sort -u > $(BUILD)/lint-builds.txt
+	@for s in $(LINT_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done | sort -u > $(BUILD)/lint-builds.txt
 	@while read -r g; do verilator --lint-only -Wall -I$(GEN) -Irtl $$g $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$g"; exit 1; }; done < $(BUILD)/lint-builds.txt
 	@out=$$(iverilog -Wall -g2005 -I$(GEN) -Irtl -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
 	@echo "lint-rtl: clean (verilator --lint-only -Wall on strand_core's defaults and $$(wc -l < $(BUILD)/lint-builds.txt) scene builds; iverilog -Wall)"

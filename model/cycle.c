@@ -80,12 +80,22 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->pinned = calloc((size_t)n, sizeof *sc->pinned);
     if (!sc->pos || !sc->prev || !sc->pinned || !sim_fx_init(&c->s, sc, &sc->fmt)) return false;
     c->lt = (int)hw_toward_latency(hp);
+    c->lp = (int)hw_toward_pipe_latency(hp);
+    if (hp->arch) {
+        c->st_pend = calloc((size_t)n, sizeof *c->st_pend);
+        c->st_pos = calloc((size_t)n, sizeof *c->st_pos);
+        if (!c->st_pend || !c->st_pos) return false;
+    }
     c->ls = (int)hw_spring_latency(hp);
     return true;
 }
 
 void cyc_free(cyc_model *c)
 {
+    free(c->st_pend);
+    free(c->st_pos);
+    c->st_pend = NULL;
+    c->st_pos = NULL;
     sim_fx_free(&c->s);
     scene_free(&c->sc);
 }
@@ -108,11 +118,17 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
     const int fec_at = c->hp.graph ? c->hp.e_rods : m * c->hp.k - (c->hp.rule ? 1 : 0);
     o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == fec_at;
+    if (c->hp.arch) o->fec = c->st_counter == c->hp.k + 1; /* chain_stream: every slot of the sweep issued */
     /* strand_core shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
     if (c->phase == PH_FORCE) {
         o->uidx = (uint32_t)c->force.uidx;
         o->nidx = (uint32_t)c->force.nidx;
         o->counter = (uint32_t)c->force.counter;
+    } else if (c->hp.arch) { /* chain_stream: the colour, port A's address, the slots issued */
+        int k = c->hp.k, t = c->st_t;
+        o->uidx = (uint32_t)c->st_colour;
+        o->nidx = !c->st_running || t > k ? 0u : t == 0 ? (uint32_t)(k - 1) : (uint32_t)(t - 1);
+        o->counter = (uint32_t)c->st_counter;
     } else if (c->hp.rule) {
         o->uidx = (uint32_t)c->pair.uidx;
         o->nidx = (uint32_t)c->pair.nidx;
@@ -180,6 +196,9 @@ static void reset_all(cyc_model *c)
         c->wb_idx[u] = 0;
         c->wb_x[u] = c->wb_y[u] = c->wb_z[u] = 0;
     }
+    c->st_running = c->st_done = false;
+    c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
+    if (c->st_pend) memset(c->st_pend, 0, (size_t)n * sizeof *c->st_pend);
     c->sq_state = SQ_IDLE;
     c->sq_iter = c->sq_timer = 0;
     c->uidx = c->nidx = c->counter = 0;
@@ -310,6 +329,54 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
     q->state = next;
 }
 
+/*
+ * chain_stream: the writes of the sweep that starts now. Every constraint of the sweep
+ * reads nodes the sweep does not write (the other colour) and the nodes it writes
+ * itself, so each is computed here, from the storage as the sweep reads it, with the
+ * frame engine's own function on the node (centred) or link (pairwise), and undone;
+ * its result waits in st_pos for its write cycle.
+ */
+static void stream_plan(cyc_model *c)
+{
+    const int n = c->hp.m * c->hp.k, colour = c->st_colour;
+    sim_fx *s = &c->s;
+    for (int i = 0; i < n; i++) c->st_pend[i] = false;
+    if (!c->hp.rule) {
+        for (int i = colour; i < n; i += 2) {
+            fx_t old[3];
+            memcpy(old, s->pos[i], sizeof old);
+            if (sim_fx_centred_node(s, i)) {
+                c->st_pend[i] = true;
+                memcpy(c->st_pos[i], s->pos[i], sizeof c->st_pos[i]);
+            }
+            memcpy(s->pos[i], old, sizeof old);
+        }
+        return;
+    }
+    for (int a = colour; a + 1 < n; a += 2) { /* the link (a, a+1) is the chain's rod a */
+        int b = a + 1;
+        bool fa = sim_fx_node_fixed(s, a), fb = sim_fx_node_fixed(s, b);
+        if (fa && fb) continue;
+        fx_t old_a[3], old_b[3];
+        memcpy(old_a, s->pos[a], sizeof old_a);
+        memcpy(old_b, s->pos[b], sizeof old_b);
+        long skipped = s->skipped;
+        sim_fx_pair_edge(s, a);
+        if (s->skipped == skipped) {
+            if (!fa) {
+                c->st_pend[a] = true;
+                memcpy(c->st_pos[a], s->pos[a], sizeof c->st_pos[a]);
+            }
+            if (!fb) {
+                c->st_pend[b] = true;
+                memcpy(c->st_pos[b], s->pos[b], sizeof c->st_pos[b]);
+            }
+        }
+        memcpy(s->pos[a], old_a, sizeof old_a);
+        memcpy(s->pos[b], old_b, sizeof old_b);
+    }
+}
+
 void cyc_edge(cyc_model *c, const cyc_inputs *in)
 {
     const hw_params *hp = &c->hp;
@@ -330,7 +397,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph;
     const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
     const bool verlet_end = c->phase == PH_VERLET && c->done;
-    const bool seq_done = hp->rule ? c->pair.done : c->sq_done;
+    const bool seq_done = hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
     const bool force_done = c->force.done;
     const bool body_end = hp->en_constraints ? c->phase == PH_CONSTRAIN && seq_done : verlet_end;
     const bool ground_start = body_end && hp->en_ground;
@@ -392,19 +459,53 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
         }
     }
+    /* chain_stream: a sweep's writes are planned as it starts and land in their cycles. */
+    if (hp->arch && c->st_running) {
+        if (c->st_t == 0) stream_plan(c);
+        int x = c->st_t - 4 - c->lp; /* the node index written in this cycle (chain_stream's header) */
+        if (x >= 0 && x < k)
+            for (int u = 0; u < m; u++) {
+                int node = u * k + x;
+                if (!c->st_pend[node]) continue;
+                memcpy(c->s.pos[node], c->st_pos[node], sizeof c->s.pos[node]);
+                c->st_pend[node] = false;
+                lane_write(c, written, u, x, node);
+            }
+    }
     /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
-    if (!hp->rule && c->sq_state == SQ_NEXT) {
+    if (!hp->arch && !hp->rule && c->sq_state == SQ_NEXT) {
         int node = c->uidx * k + c->nidx;
         if (sim_fx_centred_node(&c->s, node)) lane_write(c, written, c->uidx, c->nidx, node);
     }
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
-    if (hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
+    if (!hp->arch && hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
     if (hp->en_springs) pair_seq_edge(c, &c->force, force_start, true, written);
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
+    /* chain_stream control: sweeps of S cycles, colour 0 then 1, ITER times. */
+    if (hp->arch && hp->en_constraints) {
+        const int sweep = (int)hw_stream_sweep(hp);
+        const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k + 2;
+        const bool sweep_end = c->st_running && c->st_t == sweep - 1;
+        const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
+        c->st_done = sweep_end && last;
+        if (seq_start && !c->st_running) {
+            c->st_running = true;
+            c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
+        } else if (sweep_end) {
+            c->st_t = c->st_counter = 0;
+            if (last) c->st_running = false;
+            if (c->st_colour) c->st_iter++;
+            c->st_colour ^= 1;
+        } else if (c->st_running) {
+            c->st_t++;
+            if (slot) c->st_counter++;
+        }
+    }
+
     /* chain_sequencer control. */
-    if (!hp->rule && hp->en_constraints) {
+    if (!hp->arch && !hp->rule && hp->en_constraints) {
         const bool last_node = c->counter == n - 1;
         const bool last_iter = c->sq_iter == hp->iter - 1;
         int next = c->sq_state;

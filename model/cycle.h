@@ -101,6 +101,14 @@ typedef struct {
     int sq_state, sq_iter, sq_timer;
     int uidx, nidx, counter;
     bool sq_done;
+    /* chain_stream (ARCH = 1): the sweep's time t, colour, iteration, slots issued; each
+       node's write of this sweep (computed when the sweep starts: a sweep reads only what it
+       does not write), applied in its write cycle */
+    int lp;      /* toward_pipe's latency */
+    bool st_running, st_done;
+    int st_t, st_colour, st_iter, st_counter;
+    bool *st_pend;      /* per node: written in this sweep */
+    fx_t (*st_pos)[3];  /* its new position */
     cyc_pair_seq pair;   /* pair_sequencer, the constraints (rule 1) */
     cyc_pair_seq force;  /* pair_sequencer, the spring pass (EN_SPRINGS) */
 } cyc_model;

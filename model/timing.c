@@ -29,9 +29,19 @@ long hw_spring_latency(const hw_params *hp)
 
 static long node_count(const hw_params *hp) { return (long)hp->m * hp->k; }
 
+long hw_stream_sweep(const hw_params *hp)
+{
+    /* chain_stream.v: read node K-1, then nodes 0 .. K-1 (slots from t = 2 to K + 2, the last
+       against the right neighbour's node 0); the last result leaves toward_pipe at K + 2 + LT
+       and is written by K + 3 + LT; the next sweep reads from the cycle after */
+    return hp->k + hw_toward_pipe_latency(hp) + 4;
+}
+
 long hw_constraint_pass(const hw_params *hp)
 {
     long n = node_count(hp), rods = hp->graph ? hp->e_rods : n - 1;
+    if (hp->arch) /* chain_stream: two sweeps, even then odd */
+        return 2 * hw_stream_sweep(hp);
     if (hp->rule == 0) /* chain_sequencer: load C and D, then per node two targets and the slide */
         return 2 + n * (2 * hw_toward_latency(hp) + 2);
     return rods * (hw_toward_latency(hp) + 5); /* pair_sequencer: read a, b, excess, write a, b */
@@ -60,15 +70,20 @@ long hw_cycles_per_frame(const hw_params *hp)
 
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
+    char pipe[128] = "";
+    if (hp->arch)
+        snprintf(pipe, sizeof pipe, "toward_pipe latency LP = SQRT_BITS + DIV_BITS + 11 = %ld\n", hw_toward_pipe_latency(hp));
     return snprintf(out, (size_t)len,
                     "toward latency LT = SQRT_BITS + DIV_BITS + 2 DIM + 10 = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
+                    "%s"
                     "constraint pass = %s = %ld\n"
                     "spring pass = 1 + links (LS + 5) = %ld\n"
                     "substep = Verlet (K + 5 with constraints, else K + 4) + ITER passes [+ spring pass] [+ ground K + 4] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
-                    hw_toward_latency(hp), hw_spring_latency(hp),
-                    hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)", hw_constraint_pass(hp),
+                    hw_toward_latency(hp), hw_spring_latency(hp), pipe,
+                    hp->arch ? "2 sweeps (K + LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
+                    hw_constraint_pass(hp),
                     hw_spring_pass(hp), verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

@@ -141,10 +141,28 @@ module strand_core #(
     wire          seq_rd_pin  = sel_ok && a_pin_all[rd_sel_q];
 
     // ---- the sequencers ----
+    // the constraint pass's write of each unit (the serial sequencers write one unit at a time)
+    wire [M-1:0]    seq_we;
+    wire [M*IW-1:0] seq_widx;
+    wire [M*DW-1:0] seq_wpos;
+    genvar u;
     /* verilator lint_off PINCONNECTEMPTY */
     // the spring pass's FEC is not an output (FEC is the constraint pass's)
     generate
-        if (EN_CONSTRAINTS && RULE == 0) begin : g_centred
+        if (EN_CONSTRAINTS && ARCH) begin : g_stream
+            chain_stream #(
+`include "strand_params_pass.vh"
+            ) u_seq (
+                .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
+                .rd_idx(c_rd[IW-1:0]), .rd_pos_all(a_pos_all), .rd_pin_all(a_pin_all),
+                .wr_en(seq_we), .wr_idx_all(seq_widx), .wr_pos_all(seq_wpos),
+                .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
+            assign c_rd[AW-1:IW] = {UW{1'b0}};
+            assign c_wr     = {AW{1'b0}};  // the units' writes are seq_*
+            assign c_wr_en  = 1'b0;
+            assign c_wr_pos = {DW{1'b0}};
+            wire unused_serial_writes = &{1'b0, c_wr, c_wr_en, c_wr_pos};
+        end else if (EN_CONSTRAINTS && RULE == 0) begin : g_centred
             chain_sequencer #(
 `include "strand_params_pass.vh"
             ) u_seq (
@@ -200,6 +218,16 @@ module strand_core #(
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
+    generate
+        if (!(EN_CONSTRAINTS && ARCH)) begin : g_serial_writes
+            for (u = 0; u < M; u = u + 1) begin : g_unit_w
+                localparam [UW-1:0] U_ID = u;
+                assign seq_we[u]             = c_wr_en && c_wr[AW-1:IW] == U_ID;
+                assign seq_widx[u*IW +: IW]  = c_wr[IW-1:0];
+                assign seq_wpos[u*DW +: DW]  = c_wr_pos;
+            end
+        end
+    endgenerate
     wire unused_graph = &{1'b0, edge_we, edge_a, edge_b, edge_spring, edge_rest};  // a chain has no edge memory
     wire unused_port_a = &{1'b0, seq_rd_pos, seq_rd_pin};  // a build with no pass that reads port A
 
@@ -225,13 +253,12 @@ module strand_core #(
     endgenerate
 
     // ---- the units ----
-    genvar u;
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
             wire here_init = init_we && init_addr[AW-1:IW] == U_ID;
             wire here_load = node_we && cfg_node[AW-1:IW] == U_ID;  // NODE: the address is in cfg_data, as for PIN
-            wire here_seq  = c_wr_en && c_wr[AW-1:IW] == U_ID;
+            wire here_seq  = seq_we[u];
             wire here_acc  = f_wr_en && f_wr[AW-1:IW] == U_ID;
             node_unit #(
 `include "strand_params_pass.vh"
@@ -246,8 +273,8 @@ module strand_core #(
                 .a_acc(a_acc_all[u*DW +: DW]), .a_pinned(a_pin_all[u]),
                 .acc_we(here_acc), .acc_w(f_wr_pos),
                 .w_en(here_init || here_load || here_seq),
-                .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? f_wr[IW-1:0] : c_wr[IW-1:0]),
-                .w_pos(here_init ? init_pos : here_load ? load_pos : c_wr_pos),
+                .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? f_wr[IW-1:0] : seq_widx[u*IW +: IW]),
+                .w_pos(here_init ? init_pos : here_load ? load_pos : seq_wpos[u*DW +: DW]),
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
                 .pin_en(pin_we && cfg_node[AW-1:IW] == U_ID), .pin_idx(cfg_node[IW-1:0]),
                 .b_idx(rd_addr[IW-1:0]), .b_pos(b_pos_all[u*DW +: DW]),

@@ -33,8 +33,8 @@
  * operation on the inputs in cycle 0 has out_valid, out_t, out_ok and out_tag in cycle
  * LATENCY. Throughput one operation per clock; no operation waits for another.
  *
- * P, d, rest and the caller's tag ride beside the root and the divider in delay_line
- * rings (LUT or block RAM), not in a register per stage.
+ * P, d, rest and the caller's tag (and C, with CARRY) ride beside the root and the
+ * divider in delay_line rings (LUT or block RAM), not in a register per stage.
  *
  * Ports: p, c are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W); rest unsigned
  * Q(W-F).F; tag: TAG_W bits the caller gets back with the result. Only the valid bits
@@ -47,6 +47,7 @@ module toward_pipe #(
     parameter integer DIV_BITS  = W - 1,
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
+    parameter [0:0]   CARRY     = 1'b0,   // 1: P and C come out beside T (out_p, out_c)
     parameter integer BLOCK_MIN = 64      // delay rings: strand_ram's block RAM threshold
 ) (
     input  wire             clk,
@@ -60,7 +61,9 @@ module toward_pipe #(
     output wire             out_valid,
     output reg  [DIM*W-1:0] out_t,
     output reg              out_ok,       // 0: zero length, no direction
-    output reg  [TAG_W-1:0] out_tag
+    output reg  [TAG_W-1:0] out_tag,
+    output wire [DIM*W-1:0] out_p,        // CARRY: the operation's P and C (else 0)
+    output wire [DIM*W-1:0] out_c
 );
 
     `STRAND_CHECK(toward_pipe_W, W >= 8 && W <= 32, ("toward_pipe: W must be 8..32 (W=%0d) in %m", W))
@@ -69,7 +72,8 @@ module toward_pipe #(
     localparam integer LATENCY = SQRT_BITS + DIV_BITS + 11;
     localparam integer T_DIV   = SQRT_BITS + 6;             // cycle the divider's operands are on its inputs
     localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 8;  // cycle the quotient is there
-    localparam integer SIDE_W  = TAG_W + 1 + 2 * DIM * W;   // tag, excess, P, d
+    localparam integer CW_     = CARRY ? DIM * W : 1;       // C in the ring (CARRY), else one unused bit
+    localparam integer SIDE_W  = CW_ + TAG_W + 1 + 2 * DIM * W;   // [C], tag, excess, P, d
 
     // ---- the valid bits: bit i is the operation in cycle i + 1 ----
     reg [LATENCY-1:0] v_q;
@@ -79,7 +83,7 @@ module toward_pipe #(
     assign out_valid = v_q[LATENCY-1];
 
     // ---- cycle 1: d = C - P ----
-    reg [DIM*W-1:0] p1, c1;
+    reg [DIM*W-1:0] p1, c1, c2;
     reg [W-1:0]     rest1;
     reg [TAG_W-1:0] tag1;
     reg             excess1;
@@ -108,6 +112,7 @@ module toward_pipe #(
     always @(posedge clk) begin
         d2      <= d1;
         p2      <= p1;
+        c2      <= c1;
         rest2   <= rest1;
         tag2    <= tag1;
         excess2 <= excess1;
@@ -126,7 +131,7 @@ module toward_pipe #(
     delay_line #(.WIDTH(W), .DELAY(T_DIV - 2), .BLOCK_MIN(BLOCK_MIN)) u_rest_ring (
         .clk(clk), .reset(reset), .in(rest2), .out(rest_div));
     delay_line #(.WIDTH(SIDE_W), .DELAY(T_MUL - 2), .BLOCK_MIN(BLOCK_MIN)) u_side_ring (
-        .clk(clk), .reset(reset), .in({tag2, excess2, p2, d2}), .out(side));
+        .clk(clk), .reset(reset), .in({CARRY ? c2[CW_-1:0] : {CW_{1'b0}}, tag2, excess2, p2, d2}), .out(side));
 
     // ---- cycle 3: the radicand (each square <= 2^(2W-2): three fit 2W bits) ----
     reg [DIM*2*W-1:0] sq3;
@@ -136,22 +141,25 @@ module toward_pipe #(
         radicand4 <= sq3[0 +: 2*W] + sq3[2*W +: 2*W] + (DIM == 3 ? sq3[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
 
     // ---- cycles 4 .. : the root, then the quotient ----
-    wire [W-1:0] root, quot;
+    wire [W-1:0] len, ratio;
     wire         dz;
     /* verilator lint_off PINCONNECTEMPTY */
     // saturation flags: the saturated value is the result
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand4), .result(root), .sat());
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand4), .result(len), .sat());
     fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
-        .clk(clk), .num(rest_div), .den(root), .result(quot), .div_by_zero(dz), .sat());
+        .clk(clk), .num(rest_div), .den(len), .result(ratio), .div_by_zero(dz), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- cycle T_MUL: the products d * r; then their rounding; then T ----
-    wire [TAG_W-1:0] tag_m    = side[SIDE_W-1 -: TAG_W];
+    wire [CW_-1:0]   c_m      = side[SIDE_W-1 -: CW_];
+    wire [TAG_W-1:0] tag_m    = side[SIDE_W-CW_-1 -: TAG_W];
     wire             excess_m = side[2*DIM*W];
     wire [DIM*W-1:0] p_m      = side[DIM*W +: DIM*W];
     wire [DIM*W-1:0] d_m      = side[0 +: DIM*W];
     reg  [DIM*2*W-1:0] prod9;
     reg  [DIM*W-1:0] p9, d9, p10, d10, round10;
+    reg  [CW_-1:0]   c9, c10, c_out;
+    reg  [DIM*W-1:0] p_out;
     reg  [TAG_W-1:0] tag9, tag10;
     reg              excess9, excess10, dz9, dz10;
     wire [DIM*2*W-1:0] prod_m;
@@ -159,7 +167,7 @@ module toward_pipe #(
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_prod
             /* verilator lint_off PINCONNECTEMPTY */
-            fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(d_m[k*W +: W]), .b(quot), .y(), .sat(), .prod(prod_m[k*2*W +: 2*W]));
+            fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(d_m[k*W +: W]), .b(ratio), .y(), .sat(), .prod(prod_m[k*2*W +: 2*W]));
             fx_round #(.W(W), .F(F)) u_round (.prod(prod9[k*2*W +: 2*W]), .y(round9[k*W +: W]), .sat());
             fx_add #(.W(W), .SUB(-1)) u_t (.sub(excess10), .a(excess10 ? d10[k*W +: W] : p10[k*W +: W]),
                                           .b(round10[k*W +: W]), .y(t10[k*W +: W]), .sat());
@@ -169,6 +177,10 @@ module toward_pipe #(
     always @(posedge clk) begin
         prod9    <= prod_m;
         p9       <= p_m;
+        c9       <= c_m;
+        c10      <= c9;
+        c_out    <= c10;
+        p_out    <= p10;
         d9       <= d_m;
         tag9     <= tag_m;
         excess9  <= excess_m;
@@ -183,6 +195,17 @@ module toward_pipe #(
         out_ok   <= !dz10;
         out_tag  <= tag10;
     end
+
+    generate
+        if (CARRY) begin : g_carry
+            assign out_p = p_out;
+            assign out_c = c_out;
+        end else begin : g_no_carry
+            assign out_p = {(DIM*W){1'b0}};
+            assign out_c = {(DIM*W){1'b0}};
+            wire unused_carry = &{1'b0, p_out, c_out, c2};
+        end
+    endgenerate
 
 endmodule
 

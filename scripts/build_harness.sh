@@ -1,14 +1,16 @@
 #!/usr/bin/env bash
-# build_harness.sh SCENE OUTDIR [RTLDIR] - the Verilator harness for SCENE's build.
+# build_harness.sh SCENE OUTDIR [RTLDIR [ORDER]] - the Verilator harness for SCENE's build.
 #
 # 'strand hwgen' writes OUTDIR/params.vh and params.h (the build the scene needs);
 # Verilator compiles sim_top (strand_core with those parameters, its observation port
 # unpacked) with the C++ harness, linked with the C model library. RTLDIR (default
 # rtl/) is where the RTL comes from: a copy with a planted fault (tb/faults.py) is
-# built the same way. The binary is OUTDIR/harness; an unchanged build is not rebuilt.
+# built the same way. ORDER (serial or redblack) replaces the scene's constraint order
+# (redblack: a chain's pipelined build). The binary is OUTDIR/harness; an unchanged build
+# is not rebuilt.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-scene=$1 out=$2 rtl=${3:-rtl}
+scene=$1 out=$2 rtl=${3:-rtl} order=${4:-}
 build=${BUILD:-build}
 root=$(pwd)
 case $rtl in /*) ;; *) rtl=$root/$rtl ;; esac
@@ -17,7 +19,7 @@ mkdir -p "$out"
 # one build of a directory at a time (two runs may want the same harness at once)
 exec 9>"$out.lock"
 flock 9
-"$build/strand" hwgen "$scene" "$out.gen" --frames 1 >/dev/null
+"$build/strand" hwgen "$scene" "$out.gen" --frames 1 ${order:+--order "$order"} >/dev/null
 # rebuild only when the build parameters or a source changed
 stamp="$(grep -v Generated "$out.gen/params.vh") $rtl $(cat "$rtl"/*.v "$rtl"/*.vh "$build"/gen/*.vh tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
 if [ -x "$out/harness" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$stamp" ]; then exit 0; fi

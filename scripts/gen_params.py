@@ -56,6 +56,7 @@ PARAMS = [
     ("GRAB",           "0",      "0", "1",    "mouse",       "with EN_MOUSE: the nearest node in the box follows the pointer"),
     ("EN_CONSTRAINTS", "1",      "0", "1",    "constraints", "distance constraints (rods, struts, chain links)"),
     ("RULE",           "0",      "0", "1",    "constraints", "their rule: 0 centred (reference 000), 1 pairwise (references 001, 002)"),
+    ("ARCH",           "0",      "0", "1",    "constraints", "the constraint pass: 0 serial (one toward datapath, node by node, the order of reference 000), 1 pipelined (red/black order: every unit streams its nodes through its own toward_pipe, one constraint a clock)"),
     ("EN_SPRINGS",     "0",      "0", "1",    "springs",     "damped springs (references 001, 004): a spring pass before each Verlet pass"),
     ("EN_GROUND",      "0",      "0", "1",    "ground",      "ground collision with friction (reference 001)"),
     ("GROUND_AXIS",    "1",      "0", "DIM - 1", "ground",   "the ground's normal axis: 0 x, 1 y, 2 z"),
@@ -74,6 +75,7 @@ ONLY = {
     "ITER": "EN_CONSTRAINTS",
     "GRAB": "EN_MOUSE",
     "RULE": "EN_CONSTRAINTS",
+    "ARCH": "EN_CONSTRAINTS && !GRAPH",
     "GROUND_AXIS": "EN_GROUND",
     "GROUND_ABOVE": "EN_GROUND",
     "E_RODS": "GRAPH && EN_CONSTRAINTS",
@@ -99,6 +101,8 @@ DERIVED = [
 CHECKS = [
     ("graph_needs_the_pairwise_rule", "!GRAPH || !EN_CONSTRAINTS || RULE == 1",
      "a graph's rods and struts use the pairwise rule (RULE = 1)"),
+    ("pipelined_constraints_are_for_chains", "!ARCH || !GRAPH",
+     "the pipelined constraint pass (ARCH = 1) streams a chain; a graph's edges take the serial pass, in colour order"),
     ("graph_edge_word_wider_than_W", "!GRAPH || 2 * AW + 1 <= W", "a graph's EDGE word {spring, b, a} must fit W bits"),
     ("node_address_wider_than_W", "AW <= W", "a node address {unit, node} must fit W bits (PIN, NODE writes)"),
 ]

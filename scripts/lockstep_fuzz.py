@@ -39,10 +39,11 @@ import faults  # noqa: E402  (the planted faults: copies of rtl/)
 FIXED_BUILDS = ["sim/scenes/ref000_rope.scene", "tb/scenes/chain_q10_8.scene", "tb/scenes/chain_k4_bits.scene"]
 
 
-def read_build(path):
+def read_build(path, order=None):
     """The build a scene file needs: strand_core's parameters as 'strand info' derives them
-    (the one source of parameters: model/hwgen.c and the table of scripts/gen_params.py)."""
-    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"], cwd=ROOT,
+    (the one source of parameters: model/hwgen.c and the table of scripts/gen_params.py);
+    order (serial or redblack) replaces the scene's constraint order."""
+    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"] + (["--order", order] if order else []), cwd=ROOT,
                        stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
     info = json.loads(p.stdout) if p.returncode == 0 and p.stdout.startswith("{") else None
     if info is None or not info["rtl"]:
@@ -67,6 +68,9 @@ def random_build(rng):
     b["GRAB"] = b["EN_MOUSE"] and rng.random() < 0.35   # the grab form of the mouse
     if b["DIM"] == 3 and rng.random() < 0.4:
         b["GROUND_AXIS"] = 2    # the floor of a 3D scene
+    # the red/black order: a chain's constraints on the pipelined pass, a graph's edges by colour
+    b["ORDER"] = rng.random() < 0.5
+    b["ARCH"] = b["ORDER"] and b["EN_CONSTRAINTS"] and not b["GRAPH"]
     return b
 
 
@@ -124,7 +128,8 @@ def scene_text(build, seed):
         g = rng.uniform(0, reach / 50) * build["SUBSTEPS"] ** 2
         lines += ["[gravity]", f"accel = {vec([rng.uniform(-0.3, 0.3) * g, -g, rng.uniform(-0.3, 0.3) * g])}"]
     if build["EN_CONSTRAINTS"]:
-        lines += ["[constraints]", f"rule = {['centred', 'pairwise'][build['RULE']]}"]
+        lines += ["[constraints]", f"rule = {['centred', 'pairwise'][build['RULE']]}",
+                  f"order = {'redblack' if build.get('ORDER') else 'serial'}"]
     if build.get("EN_SPRINGS"):
         # ks h^2 / m up to 0.5 (h = 1 / substeps): from soft to near the stability bound
         sub = build["SUBSTEPS"]
@@ -171,6 +176,8 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--replay", type=int, help="run the one scene with this seed")
     ap.add_argument("--scene", action="append", default=[], help="also run this scene (PATH, or PATH:FRAMES)")
+    ap.add_argument("--redblack", action="store_true",
+                    help="also run every --scene in the red/black order (a chain's pipelined build)")
     ap.add_argument("--harness-for", metavar="SCENE", help="build (if needed) the harness for SCENE's build, print its path")
     ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
     ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
@@ -189,20 +196,25 @@ def main():
     seeds = [a.replay] if a.replay is not None else [a.seed * 100000 + i for i in range(a.n)]
     fuzz = os.path.join(BUILD, "fuzz")
     os.makedirs(os.path.join(ROOT, fuzz), exist_ok=True)
-    jobs = []   # (label, harness args, build, planted fault or "")
+    jobs = []   # (label, harness args, build, planted fault or "", order or "")
     for spec in a.scene:  # PATH or PATH:FRAMES
         path, _, frames = spec.partition(":")
-        jobs.append((f"scene {path}", [path] + (["--frames", frames] if frames else []), read_build(path), ""))
+        for order in [""] + (["redblack"] if a.redblack else []):
+            jobs.append((f"scene {path}" + (f" --order {order}" if order else ""),
+                         [path] + (["--frames", frames] if frames else []) + (["--order", order] if order else []),
+                         read_build(path, order or None), "", order))
     if a.reset_seeds and a.scene:
         first = a.scene[0].partition(":")[0]
         for k in range(a.reset_seeds):
             jobs.append((f"reset-seed {k + 1}", [first, "--frames", "20", "+verilator+rand+reset+2",
-                                                  f"+verilator+seed+{k + 1}"], read_build(first), ""))
-        jobs.append(("reset-zero", [first, "--frames", "20"], read_build(first), ""))
+                                                  f"+verilator+seed+{k + 1}"], read_build(first), "", ""))
+        jobs.append(("reset-zero", [first, "--frames", "20"], read_build(first), "", ""))
     if a.faults:
         fs = "tb/scenes/chain_q10_8.scene"
         for kind in faults.FAULTS:
-            jobs.append((f"fault {kind}", [fs, "--quiet", "--expect-fault", kind], read_build(fs), kind))
+            order = faults.ORDER.get(kind, "")
+            jobs.append((f"fault {kind}", [fs, "--quiet", "--expect-fault", kind] + (["--order", order] if order else []),
+                         read_build(fs, order or None), kind, order))
     for s in seeds:
         build = builds[s % len(builds)]
         path = os.path.join(fuzz, f"seed_{s}.scene")
@@ -210,19 +222,19 @@ def main():
             fh.write(scene_text(build, s))
         # every third scene also gets resets at random cycles in the middle of frames
         jobs.append((f"fuzz seed {s}", [path, "--quiet", "--seed", str(s), "--resets", str(2 if s % 3 == 0 else 0),
-                                        "+verilator+rand+reset+2", f"+verilator+seed+{s % 100000 + 1}"], build, ""))
+                                        "+verilator+rand+reset+2", f"+verilator+seed+{s % 100000 + 1}"], build, "", ""))
 
     # one harness per build (cached by build_harness.sh), built two at a time
     needed = {}
-    for label, args, build, fault in jobs:
-        needed.setdefault((build_key(build), fault), (args[0], build))
+    for label, args, build, fault, order in jobs:
+        needed.setdefault((build_key(build), fault), (args[0], build, order))
     def make(item):
-        (key, fault), (path, build) = item
+        (key, fault), (path, build, order) = item
         rtl = "rtl"
         if fault:  # a copy of rtl/ with the fault planted
             rtl = os.path.join(ROOT, BUILD, "faults", fault)
             faults.plant(fault, rtl)
-        cmd = ["scripts/build_harness.sh", path, harness_dir(build, fault), rtl]
+        cmd = ["scripts/build_harness.sh", path, harness_dir(build, fault), rtl] + ([order] if order else [])
         return key, run(cmd)
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
         for key, (rc, out) in ex.map(make, needed.items()):
@@ -232,7 +244,7 @@ def main():
                 return 1
 
     def one(job):
-        label, args, build, fault = job
+        label, args, build, fault, _ = job
         harness = os.path.abspath(os.path.join(ROOT, harness_dir(build, fault), "harness"))
         workdir = os.path.join(ROOT, BUILD, "fuzz")  # where a failing run leaves mismatch.fst
         p = subprocess.run([harness] + [os.path.join(ROOT, x) if x.endswith(".scene") else x for x in args], cwd=workdir,
@@ -242,7 +254,7 @@ def main():
     failed = 0
     digests = {}
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for (label, args, build, fault), rc, out in ex.map(one, jobs):
+        for (label, args, build, fault, _), rc, out in ex.map(one, jobs):
             lines = [l for l in out.splitlines() if l.startswith(("PASS", "FAIL", "MISMATCH"))]
             digest = [l.split()[-1] for l in out.splitlines() if "output digest" in l]
             if label.startswith("reset-"):

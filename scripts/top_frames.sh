@@ -1,19 +1,21 @@
 #!/usr/bin/env bash
-# top_frames.sh SCENE [FRAMES] - run tb/tb_top_frames.v on SCENE under Icarus.
+# top_frames.sh SCENE [FRAMES [ORDER]] - run tb/tb_top_frames.v on SCENE under Icarus.
 #
 # Exports the scene with 'strand hwgen' (build, setup, mouse, expected positions from
 # the C frame engine), compiles the bench with iverilog -Wall (any warning fails),
-# runs it, and prints its PASS or FAIL line.
+# runs it, and prints its PASS or FAIL line. ORDER (serial or redblack) replaces the
+# scene's constraint order: redblack runs a chain on the pipelined build.
 set -uo pipefail
 cd "$(dirname "$0")/.."
 scene=$1
 frames=${2:-}
+order=${3:-}
 build=${BUILD:-build}
-name=$(basename "$scene" .scene)
+name=$(basename "$scene" .scene)${order:+_$order}
 dir=$build/hw/$name
 rtl="tb/sim_top.v $(ls rtl/*.v)"
 rm -rf "$dir"
-if ! "$build/strand" hwgen "$scene" "$dir" ${frames:+--frames "$frames"}; then
+if ! "$build/strand" hwgen "$scene" "$dir" ${frames:+--frames "$frames"} ${order:+--order "$order"}; then
   echo "FAIL top_frames $name: strand hwgen failed"; exit 1
 fi
 if ! out=$(iverilog -Wall -g2005 -I "$build/gen" -I rtl -I "$dir" -o "$dir/top.vvp" tb/tb_top_frames.v $rtl 2>&1) || [ -n "$out" ]; then

@@ -43,7 +43,37 @@ FAULTS = {
          "            always @(posedge clk) fec_late <= reset ? 1'b0 : fec;\n"
          "            assign dbg = {wb_xyz, wb_idx_all, wb_valid_all, counter, nidx, uidx, fec_late, fv, phase};\n"),
     ],
+    # the pipelined pass (ARCH = 1): a sweep one cycle short, so the next colour reads before
+    # the last write of the previous one has landed (shows first as the colour changing early)
+    "boundary": [
+        ("chain_stream.v", r"^    localparam integer S      = K \+ LT \+ 4; .*\n",
+         "    localparam integer S      = K + LT + 3;  // planted fault: a sweep one cycle short\n"),
+    ],
+    # the pipelined pass: toward_pipe's output register bypassed (every result a cycle early)
+    "bypass": [
+        ("toward_pipe.v", r"^    output reg  \[DIM\*W-1:0\] out_t,", "    output wire [DIM*W-1:0] out_t,"),
+        ("toward_pipe.v", r"^    output reg              out_ok, ", "    output wire             out_ok, "),
+        ("toward_pipe.v", r"^    output reg  \[TAG_W-1:0\] out_tag,", "    output wire [TAG_W-1:0] out_tag,"),
+        ("toward_pipe.v", r"^    assign out_valid = v_q\[LATENCY-1\];\n", ""),
+        ("toward_pipe.v", r"^        out_t    <= t10;\n        out_ok   <= !dz10;\n        out_tag  <= tag10;\n", ""),
+        ("toward_pipe.v", r"^        c_out    <= c10;\n        p_out    <= p10;\n", "        c_out    <= c9;\n        p_out    <= p9;\n"),
+        ("toward_pipe.v", r"^endmodule",
+         "    // planted fault: the output stage bypassed\n"
+         "    assign out_valid = v_q[LATENCY-2];\n    assign out_t = t10;\n    assign out_ok = !dz10;\n    assign out_tag = tag10;\n\n"
+         "endmodule"),
+    ],
 }
+
+FAULTS["hazard"] = [
+    # the pipelined pass: a unit's colours taken from its local node index, not the global
+    # one, so across a unit border that starts at an odd node two neighbours are in flight
+    # in the same sweep, each reading the other's old position
+    ("chain_stream.v", r"^            localparam \[0:0\] U_PAR = U_PAR_I\[0:0\];",
+     "            localparam [0:0] U_PAR = 1'b0 & U_PAR_I[0];  // planted fault: local colours"),
+]
+
+# The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
+ORDER = {"boundary": "redblack", "bypass": "redblack", "hazard": "redblack"}
 
 
 def plant(name, out):

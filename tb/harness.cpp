@@ -13,9 +13,12 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
-//                [--quiet] [--as-built] [+verilator+rand+reset+2 +verilator+seed+N]
+//                [--expect-fault flip|delay|boundary|bypass|hazard] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--quiet] [--as-built] [--order serial|redblack] [+verilator+rand+reset+2 +verilator+seed+N]
 //
+// --order replaces the scene's constraint order (as 'strand --order' does): redblack
+// makes a chain's build the pipelined one (ARCH = 1); the harness must be built so
+// (scripts/build_harness.sh SCENE DIR RTLDIR redblack).
 // --png-dir DIR draws every frame the RTL computed (make movie). --as-built runs the
 // model with the build's parameters where the scene would derive others (the effects
 // gating check: an effect switched off in the build, its registers still written).
@@ -55,6 +58,7 @@ namespace {
 struct Options {
     std::string scene, trace, csv, png, expect, png_dir;
     std::string mode = "lockstep"; // lockstep | rtl (the RTL alone) | model (the cycle model alone)
+    std::string order;             // serial | redblack: the scene's constraint order replaced
     bool as_built = false;         // the model follows the compiled build, not the scene's
     int resets = 0;                // resets at random cycles during the frames
     int frames = -1;
@@ -264,6 +268,22 @@ bool Run::cycle(const cyc_inputs &in) {
         cyc_get_outputs(&model_, &m);
         if (m.fec) r_.predicted_fault = cyc_;
     }
+    // boundary: the first sweep ends a cycle early, so the RTL shows the next colour in
+    // the cycle the model spends in the sweep's last cycle
+    if (o_.expect == "boundary" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == hw_stream_sweep(&hp_) - 1)
+        r_.predicted_fault = cyc_;
+    // bypass: every write of the pipelined pass lands a cycle early, so the RTL's write-back
+    // lane shows the first one in the cycle in which the model writes it
+    // hazard: unit 1 of a chain of units of odd K takes its even local nodes in the first
+    // sweep where its odd ones are due; its node 0 (free and moving in the scene this runs
+    // on) is written at slot 1's write cycle, where the model writes nothing
+    if (o_.expect == "hazard" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == 5 + model_.lp)
+        r_.predicted_fault = cyc_;
+    if (o_.expect == "bypass" && r_.predicted_fault < 0 && model_.st_running && !in.reset) {
+        int x = model_.st_t - 4 - model_.lp;
+        for (int u = 0; x >= 0 && x < hp_.k && u < hp_.m; u++)
+            if (model_.st_pend[u * hp_.k + x]) r_.predicted_fault = cyc_;
+    }
     if (compared_ && rtl_on_ && model_on_ && !compare()) {
         r_.ok = false;
         r_.mismatch_cycle = cyc_;
@@ -403,7 +423,8 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|bypass|hazard] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--order serial|redblack]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
 }
@@ -430,6 +451,7 @@ int main(int argc, char **argv) {
         else if (a == "--png-dir") o.png_dir = value("--png-dir");
         else if (a == "--resets") o.resets = std::atoi(value("--resets"));
         else if (a == "--as-built") o.as_built = true;
+        else if (a == "--order") o.order = value("--order");
         else if (a == "--help") return usage(nullptr), 0;
         else if (a[0] == '+') continue; // Verilator's plusargs
         else if (a[0] == '-') return usage(("unknown option " + a).c_str());
@@ -437,13 +459,21 @@ int main(int argc, char **argv) {
         else return usage(("unexpected argument " + a).c_str());
     }
     if (o.scene.empty()) return usage("no SCENE given");
-    if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay") return usage("--expect-fault takes flip or delay");
+    if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
+        o.expect != "hazard")
+        return usage("--expect-fault takes flip, delay, boundary, bypass or hazard");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
+    if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 
     scene sc;
     char err[SCENE_ERR_LEN];
     if (!scene_load(&sc, o.scene.c_str(), err)) {
         std::fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    if (!o.order.empty() && scene_set_order(&sc, o.order == "redblack" ? ORDER_REDBLACK : ORDER_SERIAL, err) < 0) {
+        std::fprintf(stderr, "%s:1: --order: %s\n", sc.path, err);
+        scene_free(&sc);
         return 2;
     }
     if (hw_check(&sc, err, sizeof err)) {
