@@ -34,7 +34,7 @@ RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 SCENE     ?= sim/scenes/ref000_rope.scene
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
+.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -92,6 +92,14 @@ $(STRAND): model/strand.c $(MODEL_LIB)
 	$(CC) $(MODEL_CFLAGS) $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
 
 model: $(STRAND)
+
+# The CPU side of the speed comparison (make bench): the same frames in plain C, -O3.
+CPU_ROPE      := $(BUILD)/cpu_rope
+CPU_ROPE_OPT  := -O3
+$(CPU_ROPE): model/cpu_rope.c $(MODEL_LIB)
+	$(CC) $(CSTD) $(WARN) $(CPU_ROPE_OPT) -Imodel -I$(GEN) $(DEP_CFLAGS) -DCPU_ROPE_CFLAGS='"$(CC) $(CPU_ROPE_OPT)"' \
+	  $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
+cpu-rope: $(CPU_ROPE)
 
 run: bootstrap
 	@$(MAKE) --no-print-directory -s model
@@ -168,8 +176,11 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 	$(CC) $(MODEL_CFLAGS) -D_POSIX_C_SOURCE=200809L -DSTRAND_ROOT='"$(CURDIR)"' -DSTRAND_BIN='"$(CURDIR)/$(STRAND)"' \
 	  $< $(MODEL_LIB) $(DEP_LIBS) -lcmocka -lm -o $@
 
-test-model: $(MODEL_TESTS) $(STRAND)
+test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
+	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit
+	@for s in $(wildcard tb/bench/*.scene) sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
+	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
 
 # Every shipped scene runs in both formats.
 test-scenes: $(STRAND)
