@@ -136,7 +136,7 @@ movie: bootstrap
 
 # Simulation speed of the 4x5, 8x8 and 16x16 builds: lockstep, RTL alone, model alone.
 bench: bootstrap
-	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(GEN_HDRS)
 	@python3 scripts/bench.py docs/performance.md
 
 # Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).

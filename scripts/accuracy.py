@@ -71,10 +71,12 @@ def fmt_name(w, f):
     return f"Q{w - f}.{f}"
 
 
-def point(scene, w=32, f=16, sqrt_bits=None, div_bits=None, substeps=None, iterations=None, rule=None, frames=None):
+def point(scene, w=32, f=16, sqrt_bits=None, div_bits=None, substeps=None, iterations=None, rule=None, frames=None,
+          order=None):
     path, check = SCENES[scene]
     return dict(scene=scene, path=path, check=check, width=w, frac=f, sqrt_bits=sqrt_bits or w - 1,
-                div_bits=div_bits or w - 1, substeps=substeps, iterations=iterations, rule=rule, frames=frames)
+                div_bits=div_bits or w - 1, substeps=substeps, iterations=iterations, rule=rule, frames=frames,
+                order=order)
 
 
 def study_points():
@@ -110,6 +112,11 @@ def study_points():
     pts.append(point("pendulum"))
     pts.append(point("catenary"))
     pts.append(point("energy"))
+    # 6. the constraint order: red/black (the pipelined architecture) against the serial points of 1. and 5.
+    for rule in ("centred", "pairwise"):
+        for i in POW2:
+            pts.append(point("catenary", substeps=BASE["substeps"], iterations=i, rule=rule, order="redblack"))
+    pts.append(point("hanging", order="redblack"))
     return dedup(pts)
 
 
@@ -135,6 +142,8 @@ def derive(p):
         want["time"]["iterations"] = p["iterations"]
     if p["rule"] is not None:
         want["constraints"]["rule"] = p["rule"]
+    if p.get("order"):
+        want["constraints"]["order"] = p["order"]
     lines = open(os.path.join(ROOT, p["path"])).read().splitlines()
     out, section, done = [], None, set()
 
@@ -199,6 +208,8 @@ def label(p):
         s += f" i{p['iterations']}"
     if p["rule"]:
         s += f" {p['rule']}"
+    if p.get("order"):
+        s += f" {p['order']}"
     return s
 
 
@@ -455,6 +466,8 @@ def find(results, scene, **kw):
         p = r["point"]
         if p["scene"] != scene:
             continue
+        if p.get("order") != kw.get("order"):  # the red/black points only when asked for
+            continue
         if all(p.get(k) == v for k, v in kw.items()):
             out.append(r)
     return out
@@ -637,6 +650,41 @@ def plots(results, synth, img, cat_all, front_c, front_r, recs):
         ax.grid(True, which="both", alpha=0.3)
     save(fig, "small_steps")
     return files
+
+
+def order_section(A, results, claims):
+    """The constraint order: what red/black costs in convergence per iteration, and saves in cycles."""
+    A("## The constraint order: serial or red/black")
+    A("")
+    A("The serial order (reference 000's: each node or link sees its neighbour's new position) converges faster "
+      "per iteration; the red/black order (even nodes or links, then odd: `order = redblack`) is what the pipelined "
+      "architecture (ARCH = 1, docs/architecture.md) can keep in flight, one distance evaluation a clock per unit. "
+      f"The catenary at Q16.16, {BASE['substeps']} substeps, full root and divider, in both orders: its error against "
+      "the analytic shape (% of span) and the cycles per frame of the build each order gets (serial: the serial "
+      "sequencer; red/black: the pipelined pass), from model/timing.c.")
+    A("")
+    A("| rule | iterations | serial: error | serial: cycles per frame | red/black: error | red/black: cycles per frame "
+      "| cycles saved |")
+    A("|---|--:|--:|--:|--:|--:|--:|")
+    rows = []
+    for rule in ("centred", "pairwise"):
+        for i in POW2:
+            kw = dict(width=32, frac=16, sqrt_bits=31, div_bits=31, substeps=BASE["substeps"], iterations=i, rule=rule)
+            s = one(results, "catenary", **kw)
+            r = one(results, "catenary", order="redblack", **kw)
+            if not s or not r or not valid(s) or not valid(r):
+                continue
+            rows.append(dict(rule=rule, iterations=i, serial=cat_err(s), redblack=cat_err(r),
+                             serial_cycles=s["cycles"], redblack_cycles=r["cycles"]))
+            A(f"| {rule} | {i} | {g(cat_err(s))} % | {g(s['cycles'])} | {g(cat_err(r))} % | {g(r['cycles'])} "
+              f"| {s['cycles'] / r['cycles']:.1f}x |")
+    A("")
+    hs, hr = one(results, "hanging"), one(results, "hanging", order="redblack")
+    if hs and hr and valid(hs) and valid(hr):
+        A(f"The hanging rope at its own settings: rest stretch {g(get(hs, 'stretch_final_fx'))} % serial, "
+          f"{g(get(hr, 'stretch_final_fx'))} % red/black (Q16.16).")
+        A("")
+    claims["order"] = rows
 
 
 def write_doc(out, img, results, synth, rtl, seconds, jobs):
@@ -1016,6 +1064,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
         A(f"| {label(r['point'])} | {g(r['us_per_frame_fx'])} | {g(r['us_per_frame_dbl'])} |")
     A(f"| {label(en['point'])} (10^5 frames) | {g(en['us_per_frame_fx'])} | {g(en['us_per_frame_dbl'])} |")
     A("")
+    order_section(A, results, claims)
     A("## How to regenerate")
     A("")
     A("`make accuracy` (scripts/accuracy.mk) builds `build/sweep` from model/sweep.c, runs scripts/accuracy.py, and "

@@ -1,11 +1,23 @@
 #!/usr/bin/env python3
-"""bench.py - simulation speed, written to docs/performance.md (make bench).
+"""bench.py - the core's physics throughput against a CPU, and simulation speed, written to
+docs/performance.md (make bench).
 
-For the 4x5, 8x8 and 16x16 builds (tb/bench/*.scene) it runs the Verilator harness
-three ways - the RTL and the cycle model in lockstep, the RTL alone, the cycle model
-alone - each REPEATS times, and reports the median of the harness's own counter of
-simulated cycles per second, the frames run, and lockstep's cost against the RTL
-alone (target: at most 2x). The harness binaries are those `make sim` builds.
+Physics throughput: for the 4x5, 8x8, 16x16 and 8x128 builds (tb/bench/bench_<build>.scene)
+in both architectures (serial: the scene's order; pipelined: --order redblack), the
+Verilator harness runs the RTL alone and counts the cycles of each frame and of its
+constraint passes; the constraint updates of a frame (node updates of the centred rule)
+divided by them are the updates per clock. The ECP5-85F fmax is the median of make synth's
+nextpnr runs of the same build (build/synth/; "not placed" where make synth has not placed
+it). In the same run, build/cpu_rope (model/cpu_rope.c, -O3, one core) runs the same scene
+in the same order in double and in float, timed; its double frames are the frame engine's
+bit for bit (make test checks it). Then the 1024-node rope: the iterations per frame the
+largest placed build fits in 1/60 s at its fmax, and the stretch the frame engine reaches
+with that many iterations.
+
+Simulation speed: for the 4x5, 8x8 and 16x16 builds it runs the harness three ways - the RTL
+and the cycle model in lockstep, the RTL alone, the cycle model alone - each REPEATS times,
+and reports the median of the harness's own counter of simulated cycles per second, and
+lockstep's cost against the RTL alone (target: at most 2x).
 """
 import os
 import platform
@@ -16,7 +28,17 @@ import sys
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+BUILD = os.environ.get("BUILD", "build")
+sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.dont_write_bytecode = True
+import synth  # noqa: E402  (make synth's results: the fmax of a build)
+
 BUILDS = ["4x5", "8x8", "16x16"]
+PHYS_BUILDS = ["4x5", "8x8", "16x16", "8x128"]
+PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
+ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
+ROPE = "8x128"            # the 1024-node rope
+CPU_SECONDS = "1.5"
 FRAMES = {"4x5": 400, "8x8": 120, "16x16": 30}
 MODES = ["lockstep", "rtl", "model"]
 REPEATS = 3
@@ -31,12 +53,119 @@ def sh(cmd):
     return p.stdout
 
 
+def harness_for(scene, order=None):
+    cmd = ["python3", "scripts/lockstep_fuzz.py", "--harness-for", scene] + (["--order", order] if order else [])
+    return sh(cmd).strip().splitlines()[-1]
+
+
+def fmax_of(name):
+    """(median MHz or None, text) of make synth's ECP5-85F runs of build `name`."""
+    try:
+        runs = synth.load_pnr(os.path.join(ROOT, BUILD, "synth"), name, "ecp5")
+    except synth.Failure:
+        return None, "not placed"
+    text, med = synth.fmax_cells(runs)
+    return med, (f"{med:.1f}" if med is not None else text)
+
+
+def cpu_rate(scene, order, kind):
+    text = sh([os.path.join(BUILD, "cpu_rope"), scene, "--order", order, "--type", kind, "--min-seconds", CPU_SECONDS])
+    return float(re.search(r"updates_per_s=([\d.]+)", text).group(1)), re.search(r'cflags="([^"]*)"', text).group(1)
+
+
+def physics():
+    """Rows of the throughput table, the rope figures and notes (as markdown lines)."""
+    rows = []
+    flags = ""
+    for b in PHYS_BUILDS:
+        scene = f"tb/bench/bench_{b}.scene"
+        m, k = (int(x) for x in b.split("x"))
+        for arch, order, suffix in ARCHS:
+            harness = harness_for(scene, order)
+            text = sh([harness, scene, "--frames", str(PHYS_FRAMES), "--mode", "rtl", "--order", order])
+            cyc = int(re.search(r"cycles per frame\s+(\d+)", text).group(1))
+            u = re.search(r"constraint updates\s+(\d+) per frame: ([\d.]+) per clock over the frame, ([\d.]+) per clock in", text)
+            upf, per_clock, per_clock_c = int(u.group(1)), float(u.group(2)), float(u.group(3))
+            mhz, mhz_text = fmax_of(b + suffix)
+            cpu_d, flags = cpu_rate(scene, order, "double")
+            cpu_f, _ = cpu_rate(scene, order, "float")
+            hw = per_clock * mhz * 1e6 if mhz else None
+            rows.append(dict(build=b, arch=arch, nodes=m * k, m=m, cycles=cyc, upf=upf, per_clock=per_clock,
+                             per_clock_c=per_clock_c, mhz=mhz, mhz_text=mhz_text, hw=hw, cpu_d=cpu_d, cpu_f=cpu_f))
+            print(f"bench {b} {arch}: {cyc} cycles/frame, {per_clock:.4f} updates/clock, fmax {mhz_text}, "
+                  f"CPU {cpu_d / 1e6:.1f} M/s double, {cpu_f / 1e6:.1f} M/s float", flush=True)
+    mega = lambda v: f"{v / 1e6:.2f}" if v is not None else "-"
+    lines = ["| build | architecture | nodes | cycles per frame (RTL) | updates per clock, whole frame | "
+             "updates per clock in the constraint passes (of M) | fmax ECP5-85F, MHz (median) | updates/s at fmax, M | "
+             "CPU double, M/s | CPU float, M/s | core / CPU double |",
+             "|---|---|---|---|---|---|---|---|---|---|---|"]
+    for r in rows:
+        ratio = f"**{r['hw'] / r['cpu_d']:.2f}x**" if r["hw"] else "-"
+        lines.append(f"| {r['build']} | {r['arch']} | {r['nodes']} | {r['cycles']} | {r['per_clock']:.4f} | "
+                     f"{r['per_clock_c']:.4f} ({r['per_clock_c'] / r['m']:.3f} M) | {r['mhz_text']} | {mega(r['hw'])} | "
+                     f"{mega(r['cpu_d'])} | {mega(r['cpu_f'])} | {ratio} |")
+    notes = ["", f"CPU: `{flags}`, one core, the same scene in the same order; its double frames are the frame "
+                 "engine's bit for bit (`cpu_rope --check`, in make test).", ""]
+    # the largest placed pipelined build against the CPU, and the rope
+    pipe = [r for r in rows if r["arch"] == "pipelined" and r["hw"]]
+    if pipe:
+        big = max(pipe, key=lambda r: r["nodes"] * 1000 + r["m"])
+        notes.append(f"The largest pipelined build placed on the ECP5-85F is **{big['build']}** ({big['nodes']} nodes, "
+                     f"{big['m']} units): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
+                     f"**{big['hw'] / big['cpu_d']:.2f}x** one CPU core in double and {big['hw'] / big['cpu_f']:.2f}x in float "
+                     "(goal: 10x).")
+        notes += rope(big)
+    else:
+        notes.append("No pipelined build has an fmax yet (run `make synth`): the updates per second and the "
+                     "ratio to the CPU need it.")
+    return lines + notes
+
+
+def rope(big):
+    """The 1024-node rope at 60 frames per second on the largest placed build."""
+    if big["build"] != ROPE:
+        return [f"(The 1024-node rope figures need the {ROPE} build placed.)"]
+    scene = f"tb/bench/bench_{ROPE}.scene"
+    harness = harness_for(scene, "redblack")
+    # the cycles of one constraint iteration and of the rest of a frame, measured with 1 and 2 iterations
+    cyc = []
+    for it in (1, 2):
+        path = write_variant(scene, it, f"rope_iter{it}")
+        text = sh([harness, path, "--frames", "3", "--mode", "rtl", "--order", "redblack"])
+        cyc.append(int(re.search(r"cycles per frame\s+(\d+)", text).group(1)))
+    per_iter, rest = cyc[1] - cyc[0], 2 * cyc[0] - cyc[1]
+    budget = big["mhz"] * 1e6 / 60
+    iters = int((budget - rest) // per_iter)
+    path = write_variant(scene, iters, "rope_60fps")
+    text = sh([os.path.join(BUILD, "strand"), "run", path, "--order", "redblack"])
+    st = re.search(r"max stretch ([\d.]+) % \(final ([\d.]+) %\)", text)
+    cpu_iters = big["cpu_d"] / 60 / big["nodes"]
+    return ["", f"**The 1024-node rope at 60 frames per second.** Measured on the RTL ({ROPE}, pipelined): "
+                f"{per_iter} cycles per constraint iteration, {rest} for the rest of a frame, so at {big['mhz']:.1f} MHz "
+                f"a frame of 1/60 s ({budget:,.0f} cycles) holds **{iters} iterations**. One CPU core (double) fits "
+                f"{cpu_iters:.0f}. The frame engine run with {iters} iterations on this scene "
+                f"({path}, 100 frames, the mouse pulling it for 20) reaches a largest stretch of {st.group(1)} % and "
+                f"{st.group(2)} % at the end (goal: at most 0.05 % at rest)."]
+
+
+def write_variant(scene, iterations, name):
+    """scene with `iterations` constraint iterations per substep, written under build/bench/."""
+    out = os.path.join(BUILD, "bench", f"{name}.scene")
+    os.makedirs(os.path.join(ROOT, BUILD, "bench"), exist_ok=True)
+    text = open(os.path.join(ROOT, scene)).read()
+    text = re.sub(r"^\[time\]\n", f"[time]\niterations = {iterations}\n", text, count=1, flags=re.M)
+    with open(os.path.join(ROOT, out), "w") as f:
+        f.write(text)
+    return out
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "docs/performance.md"
+    phys = physics()
     rows = []
     for b in BUILDS:
         scene = f"tb/bench/bench_{b}.scene"
-        harness = sh(["python3", "scripts/lockstep_fuzz.py", "--harness-for", scene]).strip().splitlines()[-1]
+        harness = harness_for(scene)
         # the modes take turns within each repeat, so a change in the machine's load
         # falls on all three alike
         runs = {mode: [] for mode in MODES}
@@ -62,12 +191,26 @@ def main():
         pass
     verilator = sh(["verilator", "--version"]).strip()
     load = os.getloadavg()
-    lines = ["# Simulation speed", "",
-             "Generated by `make bench` (scripts/bench.py); every figure below comes from that run.",
+    lines = ["# Performance", "",
+             "Generated by `make bench` (scripts/bench.py); every figure below comes from that run, except the fmax, "
+             "which comes from `make synth`'s place and route (docs/resources.md).",
              f"Machine: {cpu}, {os.cpu_count()} cores; {verilator}; {platform.python_implementation()} "
              f"{platform.python_version()} for the driver. Measured {time.strftime('%Y-%m-%d')}; load average "
              f"{load[0]:.1f} / {load[1]:.1f} / {load[2]:.1f} (1 / 5 / 15 min) when the run ended: other work on the "
-             "machine slows every column, so compare the columns of one row rather than rows of different runs.", "",
+             "machine slows the CPU and simulation columns, so compare the columns of one row rather than rows of "
+             "different runs.", "",
+             "## Physics throughput: the core against one CPU core", "",
+             "Constraint updates are node updates of the centred rule (each node moved to the mean of its two "
+             "targets: two distance evaluations), counted over every iteration of every substep of the benchmark "
+             "scenes (`tb/bench/bench_<build>.scene`: a rope of M x K nodes, Q16.16 with full-precision root and "
+             "divide, gravity, the mouse, one iteration). *Serial* is the reference-000 sequencer (one distance "
+             "datapath for the whole body, the scene's order); *pipelined* is ARCH = 1 (the red/black order, every "
+             "unit streaming its nodes through its own toward_pipe: one distance evaluation a clock per unit, so its "
+             "ceiling is 0.5 x M node updates a clock, less the pipeline's drain at every colour switch). Cycles are "
+             "counted by the harness on the RTL (Verilator, RTL alone); updates/s = updates per clock over whole "
+             "frames x fmax.", "",
+             *phys, "",
+             "## Simulation speed", "",
              "Simulated clock cycles per second of the Verilator harness (`tb/harness.cpp`), the median of "
              f"{REPEATS} runs (the three modes take turns within each repeat), by its own counter (wall-clock time of the run loop). Each run resets the core, writes "
              "the setup and runs the frames of `tb/bench/bench_<build>.scene`. *Lockstep* steps the RTL and the C "

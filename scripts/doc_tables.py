@@ -11,6 +11,7 @@ with the table NAME, made from the one source of its facts:
     registers   the register map: scripts/gen_regs.py's REGS
     parameters  strand_core's parameters: scripts/gen_params.py's PARAMS, DERIVED, CHECKS
     timing      the cycle counts of the default scene's build: `strand info` (model/timing.c)
+    timing_pipelined  the same with --order redblack: the pipelined build (ARCH = 1)
 
 With --check nothing is written: the exit status is 1 and a FAIL line names each file
 whose regions are not what they would be (make test runs this).
@@ -53,17 +54,20 @@ def parameters():
     return lines
 
 
-def timing():
+def timing(order=None):
     strand = os.path.join(ROOT, BUILD, "strand")
-    p = subprocess.run([strand, "info", DEFAULT_SCENE], cwd=ROOT, capture_output=True, text=True)
+    extra = ["--order", order] if order else []
+    p = subprocess.run([strand, "info", DEFAULT_SCENE] + extra, cwd=ROOT, capture_output=True, text=True)
     if p.returncode != 0:
         raise SystemExit(f"doc_tables.py: strand info failed: {p.stderr.strip()} (make model first)")
     text = p.stdout.split("cycles (model/timing.c):\n", 1)[1]
-    return [f"`strand info {DEFAULT_SCENE}` (the {DEFAULT_SCENE.split('/')[-1]} build), from model/timing.c:", "",
+    what = f"the {DEFAULT_SCENE.split('/')[-1]} build" + (", pipelined" if order == "redblack" else "")
+    return [f"`strand info {DEFAULT_SCENE}{' --order ' + order if order else ''}` ({what}), from model/timing.c:", "",
             "```"] + text.rstrip("\n").splitlines() + ["```"]
 
 
-MAKERS = {"registers": registers, "parameters": parameters, "timing": timing}
+MAKERS = {"registers": registers, "parameters": parameters, "timing": timing,
+          "timing_pipelined": lambda: timing("redblack")}
 REGION = re.compile(r"(<!-- BEGIN generated: (\w+) -->\n)(.*?)(<!-- END generated: \2 -->)", re.S)
 
 

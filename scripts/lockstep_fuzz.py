@@ -179,13 +179,14 @@ def main():
     ap.add_argument("--redblack", action="store_true",
                     help="also run every --scene in the red/black order (a chain's pipelined build)")
     ap.add_argument("--harness-for", metavar="SCENE", help="build (if needed) the harness for SCENE's build, print its path")
+    ap.add_argument("--order", choices=["serial", "redblack"], help="with --harness-for: the build of SCENE in this order")
     ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
     ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
     a = ap.parse_args()
 
     if a.harness_for:
-        build = read_build(a.harness_for)
-        rc, out = run(["scripts/build_harness.sh", a.harness_for, harness_dir(build)])
+        build = read_build(a.harness_for, a.order)
+        rc, out = run(["scripts/build_harness.sh", a.harness_for, harness_dir(build), "rtl"] + ([a.order] if a.order else []))
         if rc != 0:
             sys.stderr.write(out)
             return 1

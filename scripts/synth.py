@@ -60,10 +60,17 @@ BUILDS = [
     ("up5k_q16_1x256", {"M": 1, "K": 256}, "ice40"),
     ("up5k_q10_2x128", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 2, "K": 128}, "ice40"),
     ("up5k_q10_1x256", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 1, "K": 256}, "ice40"),
+    # the pipelined constraint pass (ARCH = 1): generic cells and the ECP5 only; 8x128 is the
+    # 1024-node rope of the speed comparison (docs/performance.md)
+    ("4x5_pipe", {"M": 4, "K": 5, "ARCH": 1}, "ecp5p"),
+    ("8x8_pipe", {"M": 8, "K": 8, "ARCH": 1}, "ecp5p"),
+    ("16x16_pipe", {"M": 16, "K": 16, "ARCH": 1}, "ecp5p"),
+    ("8x128_pipe", {"M": 8, "K": 128, "ARCH": 1}, "ecp5p"),
 ]
 BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
 MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
+PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 CHECK_CONFIG = "4x5"      # the build that `check` and the target use
 TARGET_CELLS = 18000      # the 4x5 build's budget in generic cells
 COURSE_CELLS = 541785     # the course project's RTL, with no real square root nor divider
@@ -138,6 +145,8 @@ def flows_of(build):
     placed = BUILD_MAP[build][1]
     if placed == "ice40":  # a UP5K candidate: only what the UP5K needs
         return ["ice40", "ice40_place"]
+    if placed == "ecp5p":  # a pipelined build: its cells and the ECP5
+        return ["generic", "ecp5", "ecp5_place"]
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
 
 
@@ -512,7 +521,7 @@ def report(bdir, gen, out):
     res = {b: {f: load_flow(bdir, b, f) for f in flows_of(b)} for b, _, _ in BUILDS}
     pnr = {b: {} for b, _, _ in BUILDS}
     for b, _, placed in BUILDS:
-        if placed == "ecp5":
+        if placed in ("ecp5", "ecp5p"):
             pnr[b]["ecp5"] = load_pnr(bdir, b, "ecp5")
         pnr[b]["ice40"] = load_pnr(bdir, b, "ice40")
     yver = sorted({r[f]["tool"] for r in res.values() for f in r if r[f]["tool"]})
@@ -537,7 +546,8 @@ def report(bdir, gen, out):
     w("| build | what it changes | placed on |")
     w("|---|---|---|")
     for b, o, placed in BUILDS:
-        w(f"| {b} | {describe(b, gen)} | {'ECP5 LFE5U-85F, and tried on the UP5K' if placed == 'ecp5' else 'iCE40 UP5K'} |")
+        where = {"ecp5": "ECP5 LFE5U-85F, and tried on the UP5K", "ecp5p": "ECP5 LFE5U-85F", "ice40": "iCE40 UP5K"}[placed]
+        w(f"| {b} | {describe(b, gen)}{', ARCH=1 (pipelined)' if placed == 'ecp5p' else ''} | {where} |")
     w("")
 
     # target
@@ -596,6 +606,30 @@ def report(bdir, gen, out):
           f"| {seeds} | {f'**{med:.1f}**' if med else '-'} |")
     w("")
 
+    # the pipelined builds
+    w("## The pipelined builds (ARCH = 1) on the ECP5-85F")
+    w("")
+    w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
+      "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical), then the ECP5 "
+      "as above. The ECP5-85F has 156 MULT18X18D: a unit's toward_pipe at W = 32 takes 16 (two squares and two "
+      "products of 32 x 32 bits), which bounds the units that fit.")
+    w("")
+    w("| build | generic cells | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD "
+      "| fmax per seed, MHz | median |")
+    w("|---|--:|--:|--:|--:|--:|--:|--:|---|---|--:|")
+    for b in PIPE:
+        k = res[b]["ecp5"]["counts"]
+        kp = res[b]["ecp5_place"]["counts"]
+        seeds, med = fmax_cells(pnr[b]["ecp5"])
+        w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | {fmt(pick(k, lambda t: t == 'LUT4'))} "
+          f"| {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
+          f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
+          f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
+          f"| {fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
+          f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))} "
+          f"| {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+    w("")
+
     # ice40
     w("## iCE40 UP5K")
     w("")
@@ -607,7 +641,9 @@ def report(bdir, gen, out):
     w("| build | SB_LUT4 | DFF | SB_CARRY | SB_MAC16 | SB_RAM40_4K | placed: logic cells / RAM | fmax per seed, MHz | median |")
     w("|---|--:|--:|--:|--:|--:|---|---|--:|")
     fits = []
-    for b, _, _ in BUILDS:
+    for b, _, p in BUILDS:
+        if p == "ecp5p":
+            continue
         k = res[b]["ice40"]["counts"]
         runs = pnr[b]["ice40"]
         seeds, med = fmax_cells(runs)
@@ -658,12 +694,12 @@ def report(bdir, gen, out):
     w("|---|--:|--:|--:|--:|--:|")
     for b, _, _ in BUILDS:
         r = res[b]
-        ice = pick(r["ice40"]["counts"], lambda t: t.startswith("SB_RAM40_4K"))
+        ice = pick(r["ice40"]["counts"], lambda t: t.startswith("SB_RAM40_4K")) if "ice40" in r else None
         ecp = pick(r["ecp5"]["counts"], lambda t: t == "DP16KD") if "ecp5" in r else None
         dpr = pick(r["ecp5"]["counts"], lambda t: t == "TRELLIS_DPR16X4") if "ecp5" in r else None
         xil = pick(r["xilinx"]["counts"], lambda t: t.startswith("RAMB")) if "xilinx" in r else None
         na = "-"
-        w(f"| {b} | {full_params(b, gen)['K']} | {fmt(ice)} | {fmt(ecp) if ecp is not None else na} "
+        w(f"| {b} | {full_params(b, gen)['K']} | {fmt(ice) if ice is not None else na} | {fmt(ecp) if ecp is not None else na} "
           f"| {fmt(dpr) if dpr is not None else na} | {fmt(xil) if xil is not None else na} |")
     w("")
 
@@ -774,12 +810,14 @@ def cmd_all(a):
         print(f"FAIL synth: {len(failures)} flow(s) failed; {a.out} not written", file=sys.stderr)
         return 1
     # place and route: every seed on the ECP5; on the UP5K one seed first, the others if it fits
-    jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p == "ecp5" for s in SEEDS]
-    jobs += [(b, "ice40", SEEDS[0]) for b, _, _ in BUILDS]
+    jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in SEEDS]
+    jobs += [(b, "ice40", SEEDS[0]) for b, _, p in BUILDS if p != "ecp5p"]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
         list(ex.map(lambda j: pnr_task(*j), jobs))
         more = []
-        for b, _, _ in BUILDS:
+        for b, _, p in BUILDS:
+            if p == "ecp5p":
+                continue
             first = os.path.join(a.build, b, f"pnr_ice40_s{SEEDS[0]}.ok")
             if os.path.exists(first) and json.load(open(first)).get("fits"):
                 more += [(b, "ice40", s) for s in SEEDS[1:]]

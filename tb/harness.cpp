@@ -105,6 +105,7 @@ struct Result {
     long cycles = 0, mismatch_cycle = -1, first_frame_cycle = -1;
     int frames = 0;
     long frame_cycles_min = -1, frame_cycles_max = -1;
+    long constrain_cycles = 0;                // cycles in the constraint phase, over the frames
     uint64_t digest = 1469598103934665603ull; // FNV-1a over every output of every cycle
     long predicted_fault = -1;                // --expect-fault: the cycle the fault must show at
     int resets = 0;                           // random resets applied
@@ -386,6 +387,7 @@ Result Run::go(int frames) {
                 interrupted = true;
                 break;
             }
+            if (phase() == PH_CONSTRAIN) r_.constrain_cycles++;
             if (!cycle(in)) return r_;
         } while (!frame_done());
         if (interrupted) { // start the scene again, in the model and in the double reference
@@ -556,9 +558,23 @@ int main(int argc, char **argv) {
         render_png(&sc, &view, reinterpret_cast<double (*)[3]>(p.data()), frames, o.png.c_str());
     }
     double rms = r.err.samples ? std::sqrt(r.err.sum2 / (double)r.err.samples) : 0;
+    // the physics throughput, counted on this run: constraint updates (node updates of the
+    // centred rule, link updates of the pairwise rule) per clock over whole frames and over
+    // the constraint passes alone
+    long links = 0;
+    for (int e = 0; e < sc.n_edges; e++) links += sc.edges[e].kind != EDGE_SPRING;
+    const long updates = sc.en_constraints ? (long)sc.substeps * sc.iterations * (sc.rule == RULE_CENTRED ? sc.n_nodes : links) : 0;
+    auto throughput = [&]() {
+        if (!updates || r.frames < 1 || r.frame_cycles_max < 1) return;
+        std::printf("  constraint updates    %ld per frame: %.4f per clock over the frame, %.4f per clock in the "
+                    "constraint passes (%d units)\n", updates, (double)updates / (double)r.frame_cycles_max,
+                    r.constrain_cycles ? (double)updates * r.frames / (double)r.constrain_cycles : 0.0, hp.m);
+    };
     if (o.mode != "lockstep") {
         std::printf("%s alone %s: %d frames, %ld cycles (nothing compared)\n", o.mode == "rtl" ? "RTL" : "cycle model", sc.name,
                     r.frames, r.cycles);
+        std::printf("  cycles per frame      %ld\n", r.frame_cycles_max);
+        throughput();
         std::printf("  simulated cycles/s    %.0f\n", (double)r.cycles / secs);
         scene_free(&sc);
         return 0;
@@ -568,6 +584,7 @@ int main(int argc, char **argv) {
     if (!o.quiet) {
         std::printf("  cycles per frame      %ld%s\n", r.frame_cycles_max,
                     r.frame_cycles_min == r.frame_cycles_max ? "" : " (varies: a bug)");
+        throughput();
         std::printf("  simulated cycles/s    %.0f (RTL and model in lockstep)\n", (double)r.cycles / secs);
         std::printf("  max stretch           %.4f %%\n", r.err.stretch);
         std::printf("  error against double  rms %.3g, max %.3g rest lengths\n", rms, r.err.worst);
