@@ -9,11 +9,13 @@
  *
  * A pipeline carries the operands it needs again at its end (a datapath's P and d
  * beside its root and divider) in one of these rather than in a register per stage:
- * a ring of DELAY - 1 words in a strand_ram, written every cycle at `slot` and read
+ * a ring of DELAY - 2 words in a strand_ram, written every cycle at `slot` and read
  * at the same address (read before write), so the word read is the one written
- * DELAY - 1 cycles earlier, and the read register adds the last cycle. The ring goes
- * to LUT RAM or block RAM (strand_ram's BLOCK_MIN rule) instead of DELAY x WIDTH
- * flip-flops. A DELAY of 1 or 2 is a register chain.
+ * DELAY - 2 cycles earlier; the RAM's read register and an output register add the
+ * last two cycles (the output register keeps a block RAM's slow clock-to-output off
+ * the paths that use the word). The ring goes to LUT RAM or block RAM (strand_ram's
+ * BLOCK_MIN rule) instead of DELAY x WIDTH flip-flops. A DELAY of 1 or 2 is a
+ * register chain.
  *
  * Nothing is reset but the slot counter: the words are undefined for the first DELAY
  * cycles after reset; the pipeline's own valid bits say when a word means something.
@@ -42,7 +44,7 @@ module delay_line #(
             assign out = r[DELAY-1];
             wire unused_reset = &{1'b0, reset};
         end else begin : g_ring
-            localparam integer RING  = DELAY - 1;
+            localparam integer RING  = DELAY - 2;
             localparam integer SBITS = RING > 1 ? $clog2(RING) : 1;
             localparam integer LAST_I = RING - 1;
             localparam [SBITS-1:0] LAST = LAST_I[SBITS-1:0];
@@ -50,13 +52,17 @@ module delay_line #(
             always @(posedge clk)
                 if (reset || slot == LAST) slot <= {SBITS{1'b0}};
                 else slot <= slot + 1'b1;
+            wire [WIDTH-1:0] word;
+            reg  [WIDTH-1:0] out_q;
             /* verilator lint_off PINCONNECTEMPTY */
             // one read port (READ_B = 0)
             strand_ram #(.WIDTH(WIDTH), .DEPTH(RING), .ABITS(SBITS), .BLOCK_MIN(BLOCK_MIN), .READ_B(1'b0)) u_ring (
                 .clk(clk), .we(1'b1), .waddr(slot), .wdata(in),
-                .re_a(1'b1), .raddr_a(slot), .rdata_a(out),
+                .re_a(1'b1), .raddr_a(slot), .rdata_a(word),
                 .re_b(1'b0), .raddr_b(slot), .rdata_b());
             /* verilator lint_on PINCONNECTEMPTY */
+            always @(posedge clk) out_q <= word;
+            assign out = out_q;
         end
     endgenerate
 

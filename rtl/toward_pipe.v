@@ -19,17 +19,18 @@
  * restoring digit-by-digit root and divide of fx_sqrt and fx_div unrolled into one
  * stage per resolved bit (so SQRT_BITS and DIV_BITS stay the accuracy knobs, and the
  * results are those of the serial datapath bit for bit). Every other step has a
- * stage of its own, so no path holds more than one W x W multiply, one 2W-bit sum,
- * one root or divide stage, the rounding or one W-bit add. The multipliers are not
- * shared: DIM for the squares, DIM for the products.
+ * stage of its own, so no path holds more than one multiplier block, one 2W-bit sum,
+ * one root or divide stage, the rounding or one W-bit add: the W x W multiplies are
+ * fx_mul_pipe (partial products, then their sum). The multipliers are not shared: DIM
+ * for the squares, DIM for the products.
  *
  * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
- *   1 d = C - P            2 the squares           3 their sum (the radicand)
- *   4 .. SQRT_BITS + 5     the root (fx_sqrt_pipe)
- *   SQRT_BITS + 6 ..       the quotient (fx_div_pipe)
- *   SQRT_BITS + DIV_BITS + 8   the products d * r      + 9  their rounding
- *   SQRT_BITS + DIV_BITS + 10  T                        + 11 on the outputs
- * LATENCY = SQRT_BITS + DIV_BITS + 11 (model/timing.c hw_toward_pipe_latency): an
+ *   1 d = C - P            2, 3 the squares        4 their sum (the radicand)
+ *   5 .. SQRT_BITS + 6     the root (fx_sqrt_pipe)
+ *   SQRT_BITS + 7 ..       the quotient (fx_div_pipe)
+ *   SQRT_BITS + DIV_BITS + 9, + 10   the products d * r      + 11  their rounding
+ *   SQRT_BITS + DIV_BITS + 12        T                       + 13  on the outputs
+ * LATENCY = SQRT_BITS + DIV_BITS + 13 (model/timing.c hw_toward_pipe_latency): an
  * operation on the inputs in cycle 0 has out_valid, out_t, out_ok and out_tag in cycle
  * LATENCY. Throughput one operation per clock; no operation waits for another.
  *
@@ -69,9 +70,9 @@ module toward_pipe #(
     `STRAND_CHECK(toward_pipe_W, W >= 8 && W <= 32, ("toward_pipe: W must be 8..32 (W=%0d) in %m", W))
     `STRAND_CHECK(toward_pipe_DIM, DIM == 2 || DIM == 3, ("toward_pipe: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
-    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 11;
-    localparam integer T_DIV   = SQRT_BITS + 6;             // cycle the divider's operands are on its inputs
-    localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 8;  // cycle the quotient is there
+    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 13;
+    localparam integer T_DIV   = SQRT_BITS + 7;             // cycle the divider's operands are on its inputs
+    localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 9;  // cycle the quotient is there
     localparam integer CW_     = CARRY ? DIM * W : 1;       // C in the ring (CARRY), else one unused bit
     localparam integer SIDE_W  = CW_ + TAG_W + 1 + 2 * DIM * W;   // [C], tag, excess, P, d
 
@@ -104,7 +105,7 @@ module toward_pipe #(
         end
     endgenerate
 
-    // ---- cycle 2: the squares; P, d, rest and the tag enter their rings ----
+    // ---- cycle 2: the squares start (two cycles); P, d, rest and the tag enter their rings ----
     reg [DIM*W-1:0] d2, p2;
     reg [W-1:0]     rest2;
     reg [TAG_W-1:0] tag2;
@@ -117,13 +118,10 @@ module toward_pipe #(
         tag2    <= tag1;
         excess2 <= excess1;
     end
-    wire [DIM*2*W-1:0] sq2;
+    wire [DIM*2*W-1:0] sq4;  // the exact squares, in cycle 4 (a square is summed unrounded)
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_sq
-            /* verilator lint_off PINCONNECTEMPTY */
-            // the exact product only: a square is summed unrounded
-            fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_sq (.a(d2[k*W +: W]), .b(d2[k*W +: W]), .y(), .sat(), .prod(sq2[k*2*W +: 2*W]));
-            /* verilator lint_on PINCONNECTEMPTY */
+            fx_mul_pipe #(.W(W)) u_sq (.clk(clk), .a(d2[k*W +: W]), .b(d2[k*W +: W]), .prod(sq4[k*2*W +: 2*W]));
         end
     endgenerate
     wire [W-1:0]      rest_div;
@@ -133,67 +131,55 @@ module toward_pipe #(
     delay_line #(.WIDTH(SIDE_W), .DELAY(T_MUL - 2), .BLOCK_MIN(BLOCK_MIN)) u_side_ring (
         .clk(clk), .reset(reset), .in({CARRY ? c2[CW_-1:0] : {CW_{1'b0}}, tag2, excess2, p2, d2}), .out(side));
 
-    // ---- cycle 3: the radicand (each square <= 2^(2W-2): three fit 2W bits) ----
-    reg [DIM*2*W-1:0] sq3;
-    always @(posedge clk) sq3 <= sq2;
-    reg [2*W-1:0] radicand4;
+    // ---- cycle 4: the radicand (each square <= 2^(2W-2): three fit 2W bits) ----
+    reg [2*W-1:0] radicand5;
     always @(posedge clk)
-        radicand4 <= sq3[0 +: 2*W] + sq3[2*W +: 2*W] + (DIM == 3 ? sq3[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
+        radicand5 <= sq4[0 +: 2*W] + sq4[2*W +: 2*W] + (DIM == 3 ? sq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
 
-    // ---- cycles 4 .. : the root, then the quotient ----
+    // ---- cycles 5 .. : the root, then the quotient ----
     wire [W-1:0] len, ratio;
     wire         dz;
     /* verilator lint_off PINCONNECTEMPTY */
     // saturation flags: the saturated value is the result
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand4), .result(len), .sat());
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
     fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
         .clk(clk), .num(rest_div), .den(len), .result(ratio), .div_by_zero(dz), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
-    // ---- cycle T_MUL: the products d * r; then their rounding; then T ----
+    // ---- cycle T_MUL: the products d * r start (two cycles); at T_MUL + 2 their rounding;
+    // at T_MUL + 3 T; the operation's other values follow in s1 .. s3 ----
     wire [CW_-1:0]   c_m      = side[SIDE_W-1 -: CW_];
     wire [TAG_W-1:0] tag_m    = side[SIDE_W-CW_-1 -: TAG_W];
     wire             excess_m = side[2*DIM*W];
     wire [DIM*W-1:0] p_m      = side[DIM*W +: DIM*W];
     wire [DIM*W-1:0] d_m      = side[0 +: DIM*W];
-    reg  [DIM*2*W-1:0] prod9;
-    reg  [DIM*W-1:0] p9, d9, p10, d10, round10;
-    reg  [CW_-1:0]   c9, c10, c_out;
+    reg  [DIM*W-1:0] p_s1, p_s2, p_s3, d_s1, d_s2, d_s3, round_s3;
+    reg  [CW_-1:0]   c_s1, c_s2, c_s3, c_out;
     reg  [DIM*W-1:0] p_out;
-    reg  [TAG_W-1:0] tag9, tag10;
-    reg              excess9, excess10, dz9, dz10;
-    wire [DIM*2*W-1:0] prod_m;
-    wire [DIM*W-1:0] round9, t10;
+    reg  [TAG_W-1:0] tag_s1, tag_s2, tag_s3;
+    reg              excess_s1, excess_s2, excess_s3, dz_s1, dz_s2, dz_s3;
+    wire [DIM*2*W-1:0] prod_s2;
+    wire [DIM*W-1:0] round_s2, t_s3;
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_prod
+            fx_mul_pipe #(.W(W)) u_mul (.clk(clk), .a(d_m[k*W +: W]), .b(ratio), .prod(prod_s2[k*2*W +: 2*W]));
             /* verilator lint_off PINCONNECTEMPTY */
-            fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(d_m[k*W +: W]), .b(ratio), .y(), .sat(), .prod(prod_m[k*2*W +: 2*W]));
-            fx_round #(.W(W), .F(F)) u_round (.prod(prod9[k*2*W +: 2*W]), .y(round9[k*W +: W]), .sat());
-            fx_add #(.W(W), .SUB(-1)) u_t (.sub(excess10), .a(excess10 ? d10[k*W +: W] : p10[k*W +: W]),
-                                          .b(round10[k*W +: W]), .y(t10[k*W +: W]), .sat());
+            fx_round #(.W(W), .F(F)) u_round (.prod(prod_s2[k*2*W +: 2*W]), .y(round_s2[k*W +: W]), .sat());
+            fx_add #(.W(W), .SUB(-1)) u_t (.sub(excess_s3), .a(excess_s3 ? d_s3[k*W +: W] : p_s3[k*W +: W]),
+                                          .b(round_s3[k*W +: W]), .y(t_s3[k*W +: W]), .sat());
             /* verilator lint_on PINCONNECTEMPTY */
         end
     endgenerate
     always @(posedge clk) begin
-        prod9    <= prod_m;
-        p9       <= p_m;
-        c9       <= c_m;
-        c10      <= c9;
-        c_out    <= c10;
-        p_out    <= p10;
-        d9       <= d_m;
-        tag9     <= tag_m;
-        excess9  <= excess_m;
-        dz9      <= dz;
-        round10  <= round9;
-        p10      <= p9;
-        d10      <= d9;
-        tag10    <= tag9;
-        excess10 <= excess9;
-        dz10     <= dz9;
-        out_t    <= t10;
-        out_ok   <= !dz10;
-        out_tag  <= tag10;
+        {p_s1, d_s1, c_s1, tag_s1, excess_s1, dz_s1} <= {p_m, d_m, c_m, tag_m, excess_m, dz};
+        {p_s2, d_s2, c_s2, tag_s2, excess_s2, dz_s2} <= {p_s1, d_s1, c_s1, tag_s1, excess_s1, dz_s1};
+        {p_s3, d_s3, c_s3, tag_s3, excess_s3, dz_s3} <= {p_s2, d_s2, c_s2, tag_s2, excess_s2, dz_s2};
+        round_s3 <= round_s2;
+        out_t    <= t_s3;
+        out_ok   <= !dz_s3;
+        out_tag  <= tag_s3;
+        p_out    <= p_s3;
+        c_out    <= c_s3;
     end
 
     generate

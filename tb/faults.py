@@ -55,11 +55,12 @@ FAULTS = {
         ("toward_pipe.v", r"^    output reg              out_ok, ", "    output wire             out_ok, "),
         ("toward_pipe.v", r"^    output reg  \[TAG_W-1:0\] out_tag,", "    output wire [TAG_W-1:0] out_tag,"),
         ("toward_pipe.v", r"^    assign out_valid = v_q\[LATENCY-1\];\n", ""),
-        ("toward_pipe.v", r"^        out_t    <= t10;\n        out_ok   <= !dz10;\n        out_tag  <= tag10;\n", ""),
-        ("toward_pipe.v", r"^        c_out    <= c10;\n        p_out    <= p10;\n", "        c_out    <= c9;\n        p_out    <= p9;\n"),
+        ("toward_pipe.v", r"^        out_t    <= t_s3;\n        out_ok   <= !dz_s3;\n        out_tag  <= tag_s3;\n"
+                          r"        p_out    <= p_s3;\n        c_out    <= c_s3;\n",
+         "        p_out    <= p_s2;\n        c_out    <= c_s2;\n"),
         ("toward_pipe.v", r"^endmodule",
          "    // planted fault: the output stage bypassed\n"
-         "    assign out_valid = v_q[LATENCY-2];\n    assign out_t = t10;\n    assign out_ok = !dz10;\n    assign out_tag = tag10;\n\n"
+         "    assign out_valid = v_q[LATENCY-2];\n    assign out_t = t_s3;\n    assign out_ok = !dz_s3;\n    assign out_tag = tag_s3;\n\n"
          "endmodule"),
     ],
 }

@@ -12,7 +12,8 @@
  * operation carries its vector number as its tag. In every cycle the outputs are
  * checked against what went in LATENCY cycles before (+latency=, model/timing.c
  * hw_toward_pipe_latency): out_valid exactly when a vector went in, then its tag, its
- * ok (the engine's valid) and, when ok, t_x, t_y. A reset pulse in the middle of the
+ * ok (the engine's valid), its P and C (out_p, out_c: CARRY on) and, when ok, t_x, t_y.
+ * A reset pulse in the middle of the
  * stream must clear every operation in flight (no out_valid for LATENCY cycles).
  * Plusargs: +vectors=FILE +n=COUNT +latency=L +name=NAME.
  * Prints "PASS NAME (...)" or "FAIL NAME: ..." and ends with $fatal on failure.
@@ -46,14 +47,16 @@ module tb_toward_pipe;
     wire             out_valid, out_ok;
     wire [W-1:0]     t_x, t_y;
     wire [TAG_W-1:0] out_tag;
+    wire [W-1:0]     op_x, op_y, oc_x, oc_y;  // CARRY: P and C come back beside T
 
     // what went in, by cycle: valid and vector number (-1: none)
     integer          sent [0:HIST-1];
 
-    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(2), .TAG_W(TAG_W)) dut (
+    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(2), .TAG_W(TAG_W), .CARRY(1'b1)) dut (
         .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
         .in_p({p_y, p_x}), .in_c({c_y, c_x}), .in_rest(rest), .in_tag(tag),
-        .out_valid(out_valid), .out_t({t_y, t_x}), .out_ok(out_ok), .out_tag(out_tag));
+        .out_valid(out_valid), .out_t({t_y, t_x}), .out_ok(out_ok), .out_tag(out_tag),
+        .out_p({op_y, op_x}), .out_c({oc_y, oc_x}));
 
     initial forever #5 clk = !clk;
 
@@ -87,6 +90,8 @@ module tb_toward_pipe;
             if (out_valid !== (v >= 0)) fail(v >= 0 ? "out_valid low for an operation in flight" : "out_valid high with nothing sent");
             if (v >= 0) begin
                 if (out_tag !== v[TAG_W-1:0]) fail("wrong tag (operations out of order)");
+                if (op_x !== mem[v][6*FD +: W] || op_y !== mem[v][5*FD +: W] || oc_x !== mem[v][4*FD +: W] ||
+                    oc_y !== mem[v][3*FD +: W]) fail("out_p, out_c are not the operation's P and C");
                 if (out_ok !== mem[v][RW-4]) begin
                     $display("FAIL %0s: vector %0d: ok=%b, expected %b", name, v, out_ok, mem[v][RW-4]);
                     $fatal(1);

@@ -39,12 +39,13 @@ UNITS_VERILATOR ?= verilator
 UNITS_TIMEOUT   ?= 300
 UNITS_EXH_LANES ?= 16
 
-UNITS_NAMES := add mul avg sqrt div sqrt_pipe div_pipe
+UNITS_NAMES := add mul avg sqrt div mul_pipe sqrt_pipe div_pipe
 UNITS_RTL_DIR ?= $(UNITS_ROOT)/rtl
 UNITS_VH      := $(wildcard $(UNITS_ROOT)/rtl/*.vh)  # included by the units: a change rebuilds them
 UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v) $(UNITS_ROOT)/rtl/fx_round.v
 # what each unit's file needs beside itself (fx_mul rounds with fx_round)
 UNITS_DEPS_mul := rtl/fx_round.v
+UNITS_DEPS_mul_pipe := rtl/fx_round.v
 UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
 UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
 
@@ -74,6 +75,9 @@ UNITS_ICARUS_TESTS := \
     fx_div_w32_f16_b31_random:div:random:32:16:31 \
     fx_div_w32_f16_b8_random:div:random:32:16:8 \
     fx_div_w32_f30_b31_random:div:random:32:30:31 \
+    fx_mul_pipe_w8_f4_exhaustive:mul_pipe:exhaustive:8:4:7 \
+    fx_mul_pipe_w17_f8_random:mul_pipe:random:17:8:16 \
+    fx_mul_pipe_w32_f16_random:mul_pipe:random:32:16:31 \
     fx_sqrt_pipe_w8_b7_exhaustive:sqrt_pipe:exhaustive:8:4:7 \
     fx_sqrt_pipe_w8_b3_exhaustive:sqrt_pipe:exhaustive:8:4:3 \
     fx_sqrt_pipe_w18_b17_random:sqrt_pipe:random:18:8:17 \
@@ -104,9 +108,11 @@ UNITS_PARAMS_avg  = -Ptb_fx_avg.W=$(1)
 UNITS_PARAMS_sqrt = -Ptb_fx_sqrt.W=$(1) -Ptb_fx_sqrt.SQRT_BITS=$(3)
 UNITS_PARAMS_div  = -Ptb_fx_div.W=$(1) -Ptb_fx_div.F=$(2) -Ptb_fx_div.DIV_BITS=$(3)
 UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3)
+UNITS_PARAMS_mul_pipe  = -Ptb_fx_mul_pipe.W=$(1) -Ptb_fx_mul_pipe.F=$(2)
 UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3)
 # the pipelined units take the vectors of the iterative ones: the same function
 UNITS_GEN_UNIT_sqrt_pipe := sqrt
+UNITS_GEN_UNIT_mul_pipe  := mul
 UNITS_GEN_UNIT_div_pipe  := div
 
 # Run a command with a timeout into a log and judge it:
@@ -169,7 +175,7 @@ UNITS_DP_GEN_toward       := toward
 UNITS_DP_GEN_spring_force := spring
 UNITS_DP_GEN_toward_pipe  := toward_pipe
 # what a datapath needs beyond the arithmetic units
-UNITS_DP_DEPS_toward_pipe := fx_sqrt_pipe fx_div_pipe delay_line strand_ram
+UNITS_DP_DEPS_toward_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram
 
 # The generator with the frame engine: the expected values come from its own code.
 $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/model/timing.c $(UNITS_PARAMS_H)
@@ -226,6 +232,7 @@ UNITS_LINT_PARAMS_avg  := "" "-GW=8"
 UNITS_LINT_PARAMS_mul  := "" "-GW=8 -GF=1" "-GW=8 -GF=6" "-GW=18 -GF=8"
 UNITS_LINT_PARAMS_sqrt := "" "-GW=8 -GSQRT_BITS=1" "-GW=8 -GSQRT_BITS=3" "-GW=32 -GSQRT_BITS=8" "-GW=9 -GSQRT_BITS=7"
 UNITS_LINT_PARAMS_div  := "" "-GW=8 -GF=1 -GDIV_BITS=1" "-GW=8 -GF=6 -GDIV_BITS=3" "-GW=32 -GF=30 -GDIV_BITS=8"
+UNITS_LINT_PARAMS_mul_pipe  := "" "-GW=8" "-GW=17" "-GW=18"
 UNITS_LINT_PARAMS_sqrt_pipe := $(UNITS_LINT_PARAMS_sqrt)
 UNITS_LINT_PARAMS_div_pipe  := $(UNITS_LINT_PARAMS_div)
 # the datapath testbenches (with the RTL under them), Verilator with --timing
