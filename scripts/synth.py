@@ -71,6 +71,14 @@ BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
 MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
+# Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
+# on a pipelined build takes most of an hour); 8x8_pipe is not placed (8x128_pipe has as
+# many units and multipliers); 16x16_pipe is tried and does not fit (its multipliers).
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [1], "8x128_pipe": [1]}
+
+
+def seeds_of(build):
+    return PIPE_SEEDS.get(build, SEEDS)
 CHECK_CONFIG = "4x5"      # the build that `check` and the target use
 TARGET_CELLS = 18000      # the 4x5 build's budget in generic cells
 COURSE_CELLS = 541785     # the course project's RTL, with no real square root nor divider
@@ -146,7 +154,7 @@ def flows_of(build):
     if placed == "ice40":  # a UP5K candidate: only what the UP5K needs
         return ["ice40", "ice40_place"]
     if placed == "ecp5p":  # a pipelined build: its cells and the ECP5
-        return ["generic", "ecp5", "ecp5_place"]
+        return ["generic", "ecp5"] + (["ecp5_place"] if seeds_of(build) else [])
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
 
 
@@ -475,7 +483,7 @@ def load_flow(bdir, build, flow):
 
 def load_pnr(bdir, build, family):
     out = []
-    for s in SEEDS:
+    for s in seeds_of(build):
         p = os.path.join(bdir, build, f"pnr_{family}_s{s}.ok")
         if os.path.exists(p):
             with open(p) as f:
@@ -521,7 +529,7 @@ def report(bdir, gen, out):
     res = {b: {f: load_flow(bdir, b, f) for f in flows_of(b)} for b, _, _ in BUILDS}
     pnr = {b: {} for b, _, _ in BUILDS}
     for b, _, placed in BUILDS:
-        if placed in ("ecp5", "ecp5p"):
+        if placed == "ecp5" or (placed == "ecp5p" and seeds_of(b)):
             pnr[b]["ecp5"] = load_pnr(bdir, b, "ecp5")
         pnr[b]["ice40"] = load_pnr(bdir, b, "ice40")
     yver = sorted({r[f]["tool"] for r in res.values() for f in r if r[f]["tool"]})
@@ -612,22 +620,26 @@ def report(bdir, gen, out):
     w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
       "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical), then the ECP5 "
       "as above. The ECP5-85F has 156 MULT18X18D: a unit's toward_pipe at W = 32 takes 16 (two squares and two "
-      "products of 32 x 32 bits), which bounds the units that fit.")
+      "products of 32 x 32 bits), which bounds the units that fit. Each is placed with one seed (a run takes most "
+      "of an hour here); 8x8_pipe is not placed: 8x128_pipe has as many units and multipliers.")
     w("")
     w("| build | generic cells | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD "
       "| fmax per seed, MHz | median |")
     w("|---|--:|--:|--:|--:|--:|--:|--:|---|---|--:|")
     for b in PIPE:
         k = res[b]["ecp5"]["counts"]
-        kp = res[b]["ecp5_place"]["counts"]
-        seeds, med = fmax_cells(pnr[b]["ecp5"])
+        if seeds_of(b):
+            kp = res[b]["ecp5_place"]["counts"]
+            seeds, med = fmax_cells(pnr[b]["ecp5"])
+            placed = (f"{fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
+                      f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))}")
+        else:
+            seeds, med, placed = "not placed", None, "-"
         w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | {fmt(pick(k, lambda t: t == 'LUT4'))} "
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
           f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
-          f"| {fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
-          f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))} "
-          f"| {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+          f"| {placed} | {seeds} | {f'**{med:.1f}**' if med else '-'} |")
     w("")
 
     # ice40
@@ -810,7 +822,7 @@ def cmd_all(a):
         print(f"FAIL synth: {len(failures)} flow(s) failed; {a.out} not written", file=sys.stderr)
         return 1
     # place and route: every seed on the ECP5; on the UP5K one seed first, the others if it fits
-    jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in SEEDS]
+    jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in seeds_of(b)]
     jobs += [(b, "ice40", SEEDS[0]) for b, _, p in BUILDS if p != "ecp5p"]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
         list(ex.map(lambda j: pnr_task(*j), jobs))
