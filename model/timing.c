@@ -13,9 +13,9 @@ long hw_toward_latency(const hw_params *hp)
 
 long hw_toward_pipe_latency(const hw_params *hp)
 {
-    /* toward_pipe.v: d, the squares (two stages), their sum, the root (SQRT_BITS + 2), the
-       divide (DIV_BITS + 2), the products (two stages), their rounding, T, the output register */
-    return hp->sqrt_bits + hp->div_bits + 13L;
+    /* toward_pipe.v: d, the squares (two stages), their sum, the root (SQRT_BITS + 3), the
+       divide (DIV_BITS + 3), the products (two stages), their rounding, T, the output register */
+    return hp->sqrt_bits + hp->div_bits + 15L;
 }
 
 long hw_spring_latency(const hw_params *hp)
@@ -72,7 +72,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
 {
     char pipe[128] = "";
     if (hp->arch)
-        snprintf(pipe, sizeof pipe, "toward_pipe latency LP = SQRT_BITS + DIV_BITS + 13 = %ld\n", hw_toward_pipe_latency(hp));
+        snprintf(pipe, sizeof pipe, "toward_pipe latency LP = SQRT_BITS + DIV_BITS + 15 = %ld\n", hw_toward_pipe_latency(hp));
     return snprintf(out, (size_t)len,
                     "toward latency LT = SQRT_BITS + DIV_BITS + 2 DIM + 10 = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"

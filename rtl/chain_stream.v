@@ -71,7 +71,7 @@ module chain_stream #(
 );
 
     localparam integer DW     = DIM * W;
-    localparam integer LT     = SQRT_BITS + DIV_BITS + 13;     // toward_pipe's latency
+    localparam integer LT     = SQRT_BITS + DIV_BITS + 15;     // toward_pipe's latency
     localparam integer S      = K + LT + 4;                    // a sweep's cycles
     localparam integer TW     = $clog2(S + 1);
     localparam integer XW     = IW + 1;                        // a slot number, 0 .. K

@@ -9,14 +9,15 @@
  * Computes exactly what fx_div (and fx_div() of model/fixed.c) computes:
  * round(num * 2^F / den) for unsigned W-bit num and den, rounded at the last resolved
  * bit, saturated to 2^(W-1)-1, with div_by_zero for den = 0. The algorithm is
- * fx_div's, its DIV_BITS + 1 iterations unrolled into as many pipeline stages; the
- * iteration itself is the one of fx_div_step.vh, which fx_div uses too.
+ * fx_div's, its DIV_BITS + 1 iterations unrolled into as many pipeline stages, and a
+ * stage for the rounding; the iteration itself is the one of fx_div_step.vh, which
+ * fx_div uses too.
  *
  * Ports:   num, den  unsigned W bits (Q(W-F).F read as unsigned), sampled every edge.
  *          result, div_by_zero, sat: as fx_div's.
- * Latency: operands sampled at edge e give their result after edge e + DIV_BITS + 1
- *          (a load stage, then DIV_BITS + 1 iteration stages, the last storing the
- *          result): the same as fx_div's start-to-done.
+ * Latency: operands sampled at edge e give their result after edge e + DIV_BITS + 2
+ *          (a load stage, DIV_BITS + 1 iteration stages, the rounding stage): one more
+ *          than fx_div's start-to-done.
  * Throughput: one quotient per clock. No reset; the caller keeps its valid bits.
  * Cost: DIV_BITS + 1 subtracters of W + 2 bits and, per stage, the partial remainder,
  *       the divisor, the quotient bits so far and the dividend bits still to come.
@@ -105,11 +106,18 @@ module fx_div_pipe #(
                 assign big_s[s] = big_q;
                 assign dbz_s[s] = dbz_q;
             end else begin : g_last
-                reg [W:0] fin;
-                reg       dbz_q;
+                // the last iteration, then the rounding in a stage of its own (two carry
+                // chains in one cycle would set the clock)
+                reg [NIT-1:0] q_last;
+                reg           big_last, dbz_last;
+                reg [W:0]     fin;
+                reg           dbz_q;
                 always @(posedge clk) begin
-                    fin   <= div_result(q_next, big_s[s-1]);
-                    dbz_q <= dbz_s[s-1];
+                    q_last   <= q_next;
+                    big_last <= big_s[s-1];
+                    dbz_last <= dbz_s[s-1];
+                    fin      <= div_result(q_last, big_last);
+                    dbz_q    <= dbz_last;
                 end
                 assign result      = fin[W-1:0];
                 assign sat         = fin[W] & !dbz_q;

@@ -9,14 +9,14 @@
  * Computes exactly what fx_sqrt (and fx_sqrt() of model/fixed.c) computes: the root of
  * an unsigned 2W-bit radicand, rounded to nearest at the last resolved bit, saturated
  * to 2^(W-1)-1. The algorithm is fx_sqrt's, its SQRT_BITS + 1 iterations unrolled into
- * as many pipeline stages; the iteration itself is the one of fx_sqrt_step.vh, which
- * fx_sqrt uses too, so the two cannot differ.
+ * as many pipeline stages, and a stage for the rounding; the iteration itself is the
+ * one of fx_sqrt_step.vh, which fx_sqrt uses too, so the two cannot differ.
  *
  * Ports:   radicand  unsigned, 2W bits, sampled at every rising edge.
  *          result    W bits (0 .. 2^(W-1)-1) and sat, as fx_sqrt's.
  * Latency: a radicand sampled at edge e gives its result and sat after edge
- *          e + SQRT_BITS + 1 (one load stage, then SQRT_BITS + 1 iteration stages,
- *          the last storing the rounded result): the same as fx_sqrt's start-to-done.
+ *          e + SQRT_BITS + 2 (one load stage, SQRT_BITS + 1 iteration stages, the
+ *          rounding stage): one more than fx_sqrt's start-to-done.
  * Throughput: one root per clock. No reset: a stage holds whatever entered it; the
  *          caller keeps its own valid bits.
  * Cost: SQRT_BITS + 1 subtracters of SQRT_BITS + 3 bits and, per stage, the partial
@@ -87,8 +87,16 @@ module fx_sqrt_pipe #(
                 assign q_s[s]   = q_q;
                 assign big_s[s] = big_q;
             end else begin : g_last
-                reg [W:0] fin_q;  // {sat, result}
-                always @(posedge clk) fin_q <= sqrt_result(q_next, big_s[s-1]);
+                // the last iteration, then the rounding in a stage of its own (two carry
+                // chains in one cycle would set the clock)
+                reg [NIT-1:0] q_last;
+                reg           big_last;
+                reg [W:0]     fin_q;  // {sat, result}
+                always @(posedge clk) begin
+                    q_last   <= q_next;
+                    big_last <= big_s[s-1];
+                    fin_q    <= sqrt_result(q_last, big_last);
+                end
                 assign {sat, result} = fin_q;
             end
         end

@@ -26,11 +26,11 @@
  *
  * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
  *   1 d = C - P            2, 3 the squares        4 their sum (the radicand)
- *   5 .. SQRT_BITS + 6     the root (fx_sqrt_pipe)
- *   SQRT_BITS + 7 ..       the quotient (fx_div_pipe)
- *   SQRT_BITS + DIV_BITS + 9, + 10   the products d * r      + 11  their rounding
- *   SQRT_BITS + DIV_BITS + 12        T                       + 13  on the outputs
- * LATENCY = SQRT_BITS + DIV_BITS + 13 (model/timing.c hw_toward_pipe_latency): an
+ *   5 .. SQRT_BITS + 7     the root (fx_sqrt_pipe)
+ *   SQRT_BITS + 8 ..       the quotient (fx_div_pipe)
+ *   SQRT_BITS + DIV_BITS + 11, + 12  the products d * r      + 13  their rounding
+ *   SQRT_BITS + DIV_BITS + 14        T                       + 15  on the outputs
+ * LATENCY = SQRT_BITS + DIV_BITS + 15 (model/timing.c hw_toward_pipe_latency): an
  * operation on the inputs in cycle 0 has out_valid, out_t, out_ok and out_tag in cycle
  * LATENCY. Throughput one operation per clock; no operation waits for another.
  *
@@ -70,9 +70,9 @@ module toward_pipe #(
     `STRAND_CHECK(toward_pipe_W, W >= 8 && W <= 32, ("toward_pipe: W must be 8..32 (W=%0d) in %m", W))
     `STRAND_CHECK(toward_pipe_DIM, DIM == 2 || DIM == 3, ("toward_pipe: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
-    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 13;
-    localparam integer T_DIV   = SQRT_BITS + 7;             // cycle the divider's operands are on its inputs
-    localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 9;  // cycle the quotient is there
+    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 15;
+    localparam integer T_DIV   = SQRT_BITS + 8;             // cycle the divider's operands are on its inputs
+    localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 11; // cycle the quotient is there
     localparam integer CW_     = CARRY ? DIM * W : 1;       // C in the ring (CARRY), else one unused bit
     localparam integer SIDE_W  = CW_ + TAG_W + 1 + 2 * DIM * W;   // [C], tag, excess, P, d
 

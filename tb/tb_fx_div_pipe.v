@@ -6,7 +6,7 @@
  *
  * Reads the vectors of fx_div (tb/gen_vectors.c, unit div; record: flags {0,0,sat,dbz},
  * num, den, y) and streams them back to back, new operands every clock; the result of
- * the operands sampled at edge e must be there after edge e + DIV_BITS + 1, whatever
+ * the operands sampled at edge e must be there after edge e + DIV_BITS + 2, whatever
  * came before and after them. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
@@ -20,7 +20,7 @@ module tb_fx_div_pipe;
 
     localparam integer FD  = 4 * ((W + 3) / 4); // a W-bit field padded to hex digits
     localparam integer RW  = 4 + 3 * FD;        // record width
-    localparam integer LAT = DIV_BITS + 2;      // cycles from operands driven to their result
+    localparam integer LAT = DIV_BITS + 3;      // cycles from operands driven to their result
 
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
