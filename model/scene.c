@@ -12,6 +12,7 @@
 #include <math.h>
 #include <stdarg.h>
 #include <stdlib.h>
+#include <ctype.h>
 #include <string.h>
 
 enum { S_SCENE, S_FORMAT, S_TIME, S_CHAIN, S_GRAPH, S_GRAVITY, S_MOUSE, S_CONSTRAINTS, S_SPRINGS, S_GROUND, S_COUNT };
@@ -120,13 +121,33 @@ static void *grow(void *ptr, int *cap, int count, size_t elem)
 
 /* ---- value parsers: each reports "file:line: key: problem" ---- */
 
+/* A number as the scene format writes it: [+-] digits [. digits] [e [+-] digits], with a digit
+   before the exponent. strtod alone would also take hexadecimal (0x10), inf and nan. */
+static bool is_decimal(const char *s)
+{
+    bool digits = false;
+    if (*s == '+' || *s == '-') s++;
+    for (; isdigit((unsigned char)*s); s++) digits = true;
+    if (*s == '.')
+        for (s++; isdigit((unsigned char)*s); s++) digits = true;
+    if (!digits) return false;
+    if (*s == 'e' || *s == 'E') {
+        s++;
+        if (*s == '+' || *s == '-') s++;
+        if (!isdigit((unsigned char)*s)) return false;
+        while (isdigit((unsigned char)*s)) s++;
+    }
+    return *s == 0;
+}
+
 static bool parse_double(parser *p, const char *key, const char *s, double lo, double hi, double *out)
 {
     char *end;
     double v;
     if (!*s) return FAIL("%s: missing value", key);
+    if (!is_decimal(s)) return FAIL("%s: '%s' is not a decimal number", key, s);
     v = strtod(s, &end);
-    if (end == s || *end || !isfinite(v)) return FAIL("%s: '%s' is not a number", key, s);
+    if (end == s || *end || !isfinite(v)) return FAIL("%s: '%s' is out of the range of a double", key, s);
     if (v < lo || v > hi) return FAIL("%s: %g is out of range (%g..%g)", key, v, lo, hi);
     *out = v;
     return true;
@@ -477,8 +498,16 @@ static char *reader(char *str, int num, void *stream)
         char name[64];
         size_t n = strcspn(s + 1, "]");
         int idx;
+        const char *after;
         if (s[1 + n] != ']') return str; /* let inih report the syntax error */
         snprintf(name, sizeof name, "%.*s", (int)(n < 63 ? n : 63), s + 1);
+        /* inih ignores what follows the ']': only blanks and a comment may */
+        for (after = s + 2 + n; *after == ' ' || *after == '\t' || *after == '\r'; after++)
+            ;
+        if (*after && *after != '\n' && *after != ';' && *after != '#') {
+            fail_at(p, p->line, "unexpected text after [%s]: only a comment may follow a section header", name);
+            return NULL;
+        }
         idx = section_index(name);
         if (idx < 0) {
             fail_at(p, p->line, "unknown section [%s]", name);

@@ -52,7 +52,7 @@ static void test_syntax_and_keys(void **state)
     expect_error(TIME "colour = red\n", 3, "unknown key 'colour' in [time]");
     expect_error(TIME "frames =\n", 3, "frames: missing value");
     expect_error(TIME "frames = 12x\n", 3, "'12x' is not a whole number");
-    expect_error("[time]\ndt = fast\n", 2, "'fast' is not a number");
+    expect_error("[time]\ndt = fast\n", 2, "'fast' is not a decimal number");
     expect_error(TIME "substeps = 0\n", 3, "out of range");
     expect_error(TIME "dt = 0.02\n", 3, "duplicate key (first given on line 2)");
     expect_error(TIME "this line is not ini\n", 3, "syntax error");
@@ -63,7 +63,36 @@ static void test_syntax_and_keys(void **state)
         char text[600];
         snprintf(text, sizeof text, TIME "; %0300d\n", 0);
         expect_error(text, 3, "longer than");
+        /* 200 characters do not pass: sim/scenes/README.md says 199 */
+        snprintf(text, sizeof text, TIME "; %0198d\n", 0);
+        expect_error(text, 3, "longer than 199 characters");
     }
+    /* numbers are decimal: no hexadecimal, inf or nan (strtod would take them) */
+    expect_error("[time]\ndt = 0x10\n", 2, "dt: '0x10' is not a decimal number");
+    expect_error("[time]\ndt = inf\n", 2, "'inf' is not a decimal number");
+    expect_error("[time]\ndt = nan\n", 2, "'nan' is not a decimal number");
+    expect_error("[time]\ndt = 1e\n", 2, "'1e' is not a decimal number");
+    expect_error("[time]\ndt = .\n", 2, "'.' is not a decimal number");
+    expect_error(TIME CHAIN "[mouse]\nbox = 5 5\nimpulse = 1\nevent = 0x5 0 0 1\n", 11, "'0x5' is not a decimal number");
+    expect_error(TIME CHAIN "[gravity]\naccel = 0 0x1p3\n", 9, "'0x1p3' is not a decimal number");
+    /* a section header is the whole line, but for blanks and a comment */
+    expect_error(TIME "[chain]x\n", 3, "unexpected text after [chain]");
+    expect_error(TIME "[chain] [gravity]\n", 3, "unexpected text after [chain]");
+}
+
+/* What the format accepts: the longest line, decimal forms, a comment after a header. */
+static void test_accepted_forms(void **state)
+{
+    scene sc;
+    char err[SCENE_ERR_LEN], text[600];
+    (void)state;
+    snprintf(text, sizeof text, "[time] ; the clock\ndt = +1.e-2\n; %0197d\n[chain]\t# two units\nunits = 2\n"
+             "nodes_per_unit = 3\nstart = -.5 0\nstep = 1E0 +0.\n", 0);
+    if (!scene_load(&sc, write_scene(text), err)) fail_msg("rejected a good scene: %s", err);
+    assert_float_equal(sc.dt, 0.01, 1e-15);
+    assert_float_equal(sc.pos[0][0], -0.5, 1e-15);
+    assert_float_equal(sc.pos[1][0], 0.5, 1e-15);
+    scene_free(&sc);
 }
 
 static void test_required_and_contradictions(void **state)
@@ -238,7 +267,7 @@ int main(void)
         cmocka_unit_test(test_syntax_and_keys),         cmocka_unit_test(test_required_and_contradictions),
         cmocka_unit_test(test_graph_errors),            cmocka_unit_test(test_format_errors),
         cmocka_unit_test(test_missing_file),            cmocka_unit_test(test_chain_layout_and_defaults),
-        cmocka_unit_test(test_nul_byte),
+        cmocka_unit_test(test_nul_byte),               cmocka_unit_test(test_accepted_forms),
         cmocka_unit_test(test_shipped_scenes_load),
         cmocka_unit_test(test_constraint_order),
     };
