@@ -191,6 +191,9 @@ test-scenes: $(STRAND)
 	  if $(STRAND) run $$s --format $$f > $(BUILD)/scene-run.log 2>&1; \
 	  then echo "PASS run $$s --format $$f"; else echo "FAIL run $$s --format $$f"; cat $(BUILD)/scene-run.log; fi; \
 	done; done
+	@# --csv reads back to the core's integers: the format's extremes, Q10.8, 3D
+	@for s in tb/csv_extremes.scene tb/scenes/chain_q10_8.scene tb/scenes/graph3d_q12.scene; do \
+	  python3 tb/csv_roundtrip.py $(STRAND) $$s || echo "FAIL csv-roundtrip $$s"; done
 
 # ---- the RTL against the frame engine, every frame, bit for bit ----
 

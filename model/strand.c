@@ -49,7 +49,8 @@ static const char *usage_run =
     "                 [--auto-substeps MAX] [--order serial|redblack]\n"
     "  --frames N       frames to run (default: the scene's 'frames')\n"
     "  --format F       fixed (the scene's [format], or Q16.16) or double\n"
-    "  --csv FILE       positions at every frame end: frame,node,x,y[,z]\n"
+    "  --csv FILE       positions at every frame end: frame,node,x,y[,z] (fixed point: exact\n"
+    "                   decimals; double: 17 significant digits; each reads back to its value)\n"
     "  --hex FILE       fixed only: raw positions at every frame end, one node per line,\n"
     "                   x y [z] as W-bit hex words (testbench vectors)\n"
     "  --png DIR        one picture per frame, DIR/frame_00001.png ...\n"
@@ -284,14 +285,32 @@ typedef struct {
     bool failed;
 } run_out;
 
+/* One CSV coordinate that reads back to the same value: a fixed-point value (an integer over
+   2^F, exact in a double) as its exact decimal, F fraction digits with the trailing zeros
+   dropped; a double with 17 significant digits, enough for any double. */
+static void csv_coordinate(FILE *f, const runner *r, double v)
+{
+    char buf[96];
+    size_t n;
+    if (r->kind != NUMBER_FIXED) {
+        fprintf(f, ",%.17g", v);
+        return;
+    }
+    snprintf(buf, sizeof buf, "%.*f", r->fx.fmt.frac, v);
+    n = strlen(buf);
+    while (n > 0 && buf[n - 1] == '0') buf[--n] = 0;
+    if (n > 0 && buf[n - 1] == '.') buf[--n] = 0;
+    fprintf(f, ",%s", strcmp(buf, "-0") ? buf : "0");
+}
+
 static bool run_hook(void *user, const runner *r, int frame, double (*pos)[3])
 {
     run_out *out = user;
     const scene *sc = out->sc;
     if (out->csv)
         for (int i = 0; i < sc->n_nodes; i++) {
-            fprintf(out->csv, "%d,%d,%.9g,%.9g", frame, i, pos[i][0], pos[i][1]);
-            if (sc->dim == 3) fprintf(out->csv, ",%.9g", pos[i][2]);
+            fprintf(out->csv, "%d,%d", frame, i);
+            for (int k = 0; k < sc->dim; k++) csv_coordinate(out->csv, r, pos[i][k]);
             fputc('\n', out->csv);
         }
     if (out->hex) {
