@@ -194,6 +194,8 @@ test-scenes: $(STRAND)
 	@# --csv reads back to the core's integers: the format's extremes, Q10.8, 3D
 	@for s in tb/csv_extremes.scene tb/scenes/chain_q10_8.scene tb/scenes/graph3d_q12.scene; do \
 	  python3 tb/csv_roundtrip.py $(STRAND) $$s || echo "FAIL csv-roundtrip $$s"; done
+	@# strand check names the constants that vanish, clip or lose more than 1 %
+	@python3 tb/check_warnings.py $(STRAND) || true
 
 # ---- the RTL against the frame engine, every frame, bit for bit ----
 

@@ -70,10 +70,10 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
         sc->edges = calloc((size_t)sc->n_edges, sizeof *sc->edges);
         if (!sc->edges) return false;
         if (hp->en_constraints)
-            for (int i = 0; i < links; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, 0, 0, 0};
+            for (int i = 0; i < links; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, 0, 0, 0, 0};
         c->spring0 = e;
         if (hp->en_springs)
-            for (int i = 0; i < links; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, 0, 0, 0};
+            for (int i = 0; i < links; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, 0, 0, 0, 0};
     }
     sc->pos = calloc((size_t)n, sizeof *sc->pos);
     sc->prev = calloc((size_t)n, sizeof *sc->prev);

@@ -28,6 +28,7 @@ bool P(node_fixed)(const SIM *s, int i) { return s->sc->pinned[i] || s->grabbed 
 bool P(init)(SIM *s, const scene *sc, const fx_format *fmt)
 {
     double h = scene_h(sc);
+    scene_consts c;
     memset(s, 0, sizeof *s);
     s->sc = sc;
     if (fmt) s->fmt = *fmt;
@@ -55,23 +56,18 @@ bool P(init)(SIM *s, const scene *sc, const fx_format *fmt)
         }
     for (int e = 0; e < sc->n_edges; e++) s->rest[e] = FROM(sc->edges[e].rest);
     s->dist = FROM(sc->chain_rest);
+    scene_constants(sc, &c);
     for (int k = 0; k < 3; k++) {
-        s->gravity[k] = sc->en_gravity ? FROM(sc->integrator == INTEGRATOR_EULER ? sc->gravity[k] : sc->gravity[k] * h * h) : FROM(0);
+        s->gravity[k] = FROM(c.gravity[k]);
         s->box[k] = FROM(sc->mouse_box[k]);
     }
-    s->damping = FROM(sc->damping);
-    s->impulse = FROM(sc->mouse_impulse);
-    /* Springs: Verlet adds F h^2 / m to the position; velocity is x - x- (per substep). */
-    if (sc->integrator == INTEGRATOR_VERLET) {
-        s->ks = FROM(sc->ks * h * h / sc->mass);
-        s->kd = FROM(sc->kd_per_step ? sc->kd * h * h / sc->mass : sc->kd * h / sc->mass);
-    } else {
-        s->ks = FROM(sc->ks / sc->mass);
-        s->kd = FROM(sc->kd_per_step ? sc->kd * h / sc->mass : sc->kd / sc->mass);
-    }
-    s->friction = FROM(1.0 - sc->ground_friction);
-    s->ground = FROM(sc->ground_level + sc->ground_sign * sc->ground_radius);
-    s->h = FROM(h);
+    s->damping = FROM(c.damping);
+    s->impulse = FROM(c.impulse);
+    s->ks = FROM(c.ks);
+    s->kd = FROM(c.kd);
+    s->friction = FROM(c.friction);
+    s->ground = FROM(c.ground);
+    s->h = FROM(c.h);
     return true;
 }
 

@@ -35,7 +35,6 @@ typedef struct {
     int n;
 } node_offset;
 
-#define MAX_KEYS 96
 
 typedef struct {
     scene *sc;
@@ -44,12 +43,6 @@ typedef struct {
     int err_line; /* first error, 0 if none */
     char err[SCENE_ERR_LEN];
     int section_line[S_COUNT];
-    struct {
-        int section;
-        char key[24];
-        int line;
-    } seen[MAX_KEYS];
-    int n_seen;
     /* values whose checks need the whole file */
     vec_value chain_start, chain_step, chain_end, gravity, box, velocity, prev_offset, origin;
     int n_node_lines, cap_nodes;
@@ -82,9 +75,9 @@ static bool fail_at(parser *p, int line, const char *fmt, ...)
 
 static int key_line(const parser *p, int section, const char *key)
 {
-    for (int i = 0; i < p->n_seen; i++)
-        if (p->seen[i].section == section && strcmp(p->seen[i].key, key) == 0)
-            return p->seen[i].line;
+    const scene *sc = p->sc;
+    for (int i = 0; i < sc->n_keys; i++)
+        if (sc->keys[i].section == section && strcmp(sc->keys[i].key, key) == 0) return sc->keys[i].line;
     return 0;
 }
 
@@ -293,7 +286,7 @@ static bool handle_graph_item(parser *p, const char *key, const char *value)
         p->edge_lines = xrealloc(p->edge_lines, (size_t)p->cap_edges * sizeof *p->edge_lines);
         p->edge_rest_given = xrealloc(p->edge_rest_given, (size_t)p->cap_edges * sizeof *p->edge_rest_given);
     }
-    sc->edges[sc->n_edges] = (scene_edge){a, b, (edge_kind)kind, rest, 0, 0};
+    sc->edges[sc->n_edges] = (scene_edge){a, b, (edge_kind)kind, rest, 0, 0, 0};
     p->edge_rest_given[sc->n_edges] = n == 4;
     p->edge_lines[sc->n_edges++] = p->line;
     return true;
@@ -334,10 +327,11 @@ static int handler(void *user, const char *section, const char *key, const char 
         int prev = key_line(p, s, key);
         if (prev) return FAIL("%s: duplicate key (first given on line %d)", key, prev);
     }
-    if (p->n_seen < MAX_KEYS && !key_line(p, s, key)) {
-        p->seen[p->n_seen].section = s;
-        snprintf(p->seen[p->n_seen].key, sizeof p->seen[p->n_seen].key, "%s", key);
-        p->seen[p->n_seen++].line = p->line;
+    if (p->sc->n_keys < SCENE_MAX_KEYS && !key_line(p, s, key)) {
+        scene *sc = p->sc;
+        sc->keys[sc->n_keys].section = s;
+        snprintf(sc->keys[sc->n_keys].key, sizeof sc->keys[sc->n_keys].key, "%s", key);
+        sc->keys[sc->n_keys++].line = p->line;
     }
 
     switch (s) {
@@ -582,9 +576,9 @@ static bool build_chain(parser *p)
         if (!sc->edges) return fail_at(p, 1, "out of memory");
         int e = 0;
         if (sc->en_constraints)
-            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, sc->chain_rest, 0, 0};
+            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_ROD, sc->chain_rest, 0, 0, 0};
         if (sc->en_springs)
-            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, sc->chain_rest, 0, 0};
+            for (int i = 0; i + 1 < n; i++) sc->edges[e++] = (scene_edge){i, i + 1, EDGE_SPRING, sc->chain_rest, 0, 0, 0};
     }
     return true;
 }
@@ -753,7 +747,10 @@ static bool finish(parser *p)
         if (sc->pinned[i]) memcpy(sc->prev[i], sc->pos[i], sizeof sc->prev[i]);
 
     if (sc->number == NUMBER_FIXED && !check_fits(p)) return false;
-    for (int e = 0; e < sc->n_edges; e++) sc->edges[e].src = e;
+    for (int e = 0; e < sc->n_edges; e++) {
+        sc->edges[e].src = e;
+        sc->edges[e].line = sc->body == BODY_CHAIN ? blame(p, S_CHAIN, "rest") : p->edge_lines[e];
+    }
     if (scene_set_order(sc, sc->order, p->err) < 0) {
         /* the message names no line: the order key's (or the first line) */
         char msg[SCENE_ERR_LEN];
@@ -874,6 +871,34 @@ int scene_section_line(const scene *sc, const char *section)
 {
     int i = section_index(section);
     return i >= 0 && sc->section_lines[i] ? sc->section_lines[i] : 1;
+}
+
+int scene_key_line(const scene *sc, const char *section, const char *key)
+{
+    int s = section_index(section);
+    for (int i = 0; i < sc->n_keys; i++)
+        if (sc->keys[i].section == s && strcmp(sc->keys[i].key, key) == 0) return sc->keys[i].line;
+    return scene_section_line(sc, section);
+}
+
+void scene_constants(const scene *sc, scene_consts *c)
+{
+    double h = scene_h(sc), m = sc->mass;
+    bool verlet = sc->integrator == INTEGRATOR_VERLET;
+    for (int k = 0; k < 3; k++) c->gravity[k] = sc->en_gravity ? (verlet ? sc->gravity[k] * h * h : sc->gravity[k]) : 0;
+    /* Springs: Verlet adds F h^2 / m to the position; velocity is x - x- (per substep). */
+    if (verlet) {
+        c->ks = sc->ks * h * h / m;
+        c->kd = sc->kd_per_step ? sc->kd * h * h / m : sc->kd * h / m;
+    } else {
+        c->ks = sc->ks / m;
+        c->kd = sc->kd_per_step ? sc->kd * h / m : sc->kd / m;
+    }
+    c->damping = sc->damping;
+    c->impulse = sc->mouse_impulse;
+    c->friction = 1.0 - sc->ground_friction;
+    c->ground = sc->ground_level + sc->ground_sign * sc->ground_radius;
+    c->h = h;
 }
 
 void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down)

@@ -24,6 +24,7 @@ extern "C" {
 #define SCENE_MAX_SUBSTEPS 4096
 #define SCENE_MAX_ITERATIONS 4096
 #define SCENE_ERR_LEN 512
+#define SCENE_MAX_KEYS 96 /* distinct keys a scene may give */
 
 typedef enum { BODY_CHAIN, BODY_GRAPH } body_kind;
 typedef enum { EDGE_ROD, EDGE_STRUT, EDGE_SPRING } edge_kind;
@@ -43,6 +44,7 @@ typedef struct {
     double rest;    /* rest length */
     int src;        /* its index in the scene's own order (scene_set_order sorts the edges) */
     int colour;     /* redblack: its colour (constraint edges; 0 for springs and when serial) */
+    int line;       /* the scene line that gives it (a graph's edge line, a chain's [chain] rest) */
 } scene_edge;
 
 typedef struct {
@@ -98,7 +100,27 @@ typedef struct {
     double ground_level, ground_radius, ground_friction;
 
     int section_lines[10]; /* line of each section header, 0 if absent (scene_section_line) */
+    struct {
+        int section;
+        char key[24];
+        int line;
+    } keys[SCENE_MAX_KEYS]; /* the line of each key given once (scene_key_line) */
+    int n_keys;
 } scene;
+
+/* The scene's constants as the engines use them, before rounding to the number format:
+   the per-step scalings are written here once (engine init, hwgen through it, and
+   strand check's rounding warnings). */
+typedef struct {
+    double gravity[3]; /* g h^2 (Verlet: added to a position) or g (Euler) */
+    double ks, kd;     /* Verlet: ks h^2/m and kd h/m (kd h^2/m per-step damper); Euler: /m */
+    double damping;    /* Verlet damping factor */
+    double impulse;    /* mouse impulse */
+    double friction;   /* 1 - ground friction */
+    double ground;     /* the ground boundary: level +- radius */
+    double h;          /* the substep */
+} scene_consts;
+void scene_constants(const scene *sc, scene_consts *c);
 
 /*
  * Parse and validate a scene file. On failure returns false and writes
@@ -129,6 +151,8 @@ const char *scene_check_format(const scene *sc, const fx_format *fmt, char *buf,
 
 /* Line of a section's header ("springs", "ground", ...), or 1 if the scene has none. */
 int scene_section_line(const scene *sc, const char *section);
+/* The line of `key` in [section], else the section's header line, else 1. */
+int scene_key_line(const scene *sc, const char *section, const char *key);
 
 /* Mouse state at the start of a frame: the last event with event.frame <= frame. */
 void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down);

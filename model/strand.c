@@ -38,9 +38,13 @@ static const char *usage_main =
     "'strand COMMAND --help' describes each command's options.\n";
 
 static const char *usage_check =
-    "usage: strand check SCENE [--auto-substeps MAX] [--order serial|redblack]\n"
+    "usage: strand check SCENE [--auto-substeps MAX] [--order serial|redblack] [--strict]\n"
     "Validate SCENE; print its summary and its stability bound, or 'file:line: message'\n"
-    "and exit 2. A scene whose springs cross the bound gets a warning on stderr.\n"
+    "and exit 2. Warnings on stderr, 'file:line: warning: ...': springs that cross the\n"
+    "bound, and a constant the hardware uses (g h^2, ks h^2/m, kd h/m, damping, impulse,\n"
+    "friction, rest lengths) that rounds to 0, loses more than 1 % to rounding or does not\n"
+    "fit the number format, with the bits it needs.\n"
+    "  --strict             exit 2 when there is a warning\n"
     "  --auto-substeps MAX  also print the fewest substeps (up to MAX) that meet the bound\n"
     "                       with a safety factor of 2 on the step\n";
 
@@ -108,6 +112,7 @@ typedef struct {
     const char *csv, *hex, *png;
     int auto_substeps; /* 0: off; else the most substeps --auto-substeps may pick */
     int order;         /* -1: the scene's; else --order's constraint_order */
+    bool strict;       /* check: warnings are errors */
     bool help;
 } options;
 
@@ -118,6 +123,7 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
         {"frames", required_argument, 0, 'f'}, {"format", required_argument, 0, 'F'}, {"csv", required_argument, 0, 'c'},
         {"hex", required_argument, 0, 'x'},    {"png", required_argument, 0, 'p'},    {"help", no_argument, 0, 'h'},
         {"auto-substeps", required_argument, 0, 'a'}, {"order", required_argument, 0, 'o'},
+        {"strict", no_argument, 0, 's'},
         {0, 0, 0, 0},
     };
     int c;
@@ -168,6 +174,7 @@ static const char *parse_options(const char *cmd, int argc, char **argv, options
             }
             break;
         case 'c': o->csv = optarg; break;
+        case 's': o->strict = true; break;
         case 'x': o->hex = optarg; break;
         case 'p': o->png = optarg; break;
         }
@@ -209,15 +216,76 @@ static const char *format_name(number_kind kind, const fx_format *fmt, char *buf
 /* ---- the stability bound (stability_bound.h, docs/stability.md) ---- */
 
 /* Warn on stderr, at the [springs] line, when the scene's step crosses the bound. */
-static void warn_bound(const scene *sc)
+/* Warns if the springs cross the stability bound; returns the number of warnings (0 or 1). */
+static int warn_bound(const scene *sc)
 {
     stab_bound b = stab_compute(sc, 0);
-    if (!b.springs || b.index < 1) return;
+    if (!b.springs || b.index < 1) return 0;
     fprintf(stderr, "%s:%d: warning: the springs cross the stability bound at h = dt/%d = %.4g: h*omega = %.3g (limit 2), "
                     "h*kd/m = %.3g, index %.3g (limit 1)",
             sc->path, scene_section_line(sc, "springs"), sc->substeps, b.h, b.h_omega, b.h_kd_m, b.index);
     if (b.h_max > 0) fprintf(stderr, "; stable below h = %.4g, %d substeps or more; see --auto-substeps\n", b.h_max, (int)ceil(sc->dt / b.h_max));
     else fprintf(stderr, "; no step is stable%s\n", sc->integrator == INTEGRATOR_EULER ? " for explicit Euler without a damper" : "");
+    return 1;
+}
+
+/* One constant the hardware rounds to the scene's format: a warning (returns 1) if it does
+   not fit, rounds to 0, or loses more than 1 % to rounding; 0 if it is fine. */
+static int warn_constant(const scene *sc, int line, const char *what, double v)
+{
+    const fx_format *f = &sc->fmt;
+    int q_int = f->width - f->frac;
+    double lsb = ldexp(1.0, -f->frac), got;
+    /* the fraction bits that keep the rounding error (half an LSB) within 1 % of |v| */
+    int frac_needed = (int)ceil(log2(50.0 / fabs(v)));
+    if (v == 0) return 0;
+    if (!fx_fits(f, v)) {
+        fprintf(stderr, "%s:%d: warning: %s = %.6g does not fit Q%d.%d (largest %.6g): it saturates; it needs %d integer bits\n",
+                sc->path, line, what, v, q_int, f->frac, fx_to_double(f, fx_max(f)), (int)floor(log2(fabs(v))) + 2);
+        return 1;
+    }
+    got = fx_to_double(f, fx_from_double(f, v));
+    if (got == 0) {
+        fprintf(stderr, "%s:%d: warning: %s = %.6g rounds to 0 in Q%d.%d (%.3g LSB): the effect vanishes; it needs %d fraction bits "
+                        "to hold it within 1 %%\n", sc->path, line, what, v, q_int, f->frac, fabs(v) / lsb, frac_needed);
+        return 1;
+    }
+    if (fabs(got - v) > 0.01 * fabs(v)) {
+        fprintf(stderr, "%s:%d: warning: %s = %.6g becomes %.6g in Q%d.%d (%+.1f %%): it needs %d fraction bits to hold it within 1 %%\n",
+                sc->path, line, what, v, got, q_int, f->frac, 100 * (got - v) / v, frac_needed);
+        return 1;
+    }
+    return 0;
+}
+
+/* Every pre-scaled constant of the scene (scene_constants), checked; returns the warnings. */
+static int warn_constants(const scene *sc)
+{
+    scene_consts c;
+    bool verlet = sc->integrator == INTEGRATOR_VERLET;
+    int warnings = 0;
+    char what[64];
+    scene_constants(sc, &c);
+    if (sc->en_gravity)
+        for (int k = 0; k < sc->dim; k++) {
+            snprintf(what, sizeof what, "%s (%c)", verlet ? "g h^2" : "g", "xyz"[k]);
+            warnings += warn_constant(sc, scene_key_line(sc, "gravity", "accel"), what, c.gravity[k]);
+        }
+    if (sc->en_springs) {
+        warnings += warn_constant(sc, scene_key_line(sc, "springs", "ks"), verlet ? "ks h^2/m" : "ks/m", c.ks);
+        warnings += warn_constant(sc, scene_key_line(sc, "springs", "kd"),
+                                  verlet ? (sc->kd_per_step ? "kd h^2/m" : "kd h/m") : (sc->kd_per_step ? "kd h/m" : "kd/m"), c.kd);
+    }
+    if (sc->damping > 0) warnings += warn_constant(sc, scene_key_line(sc, "time", "damping"), "damping", c.damping);
+    if (sc->en_mouse) warnings += warn_constant(sc, scene_key_line(sc, "mouse", "impulse"), "the mouse impulse", c.impulse);
+    if (sc->en_ground) warnings += warn_constant(sc, scene_key_line(sc, "ground", "friction"), "1 - friction", c.friction);
+    for (int e = 0; e < sc->n_edges; e++) {
+        /* a chain's links share one rest length: one warning */
+        if (sc->body == BODY_CHAIN && e > 0) break;
+        snprintf(what, sizeof what, "the rest length of edge %d-%d", sc->edges[e].a, sc->edges[e].b);
+        warnings += warn_constant(sc, sc->edges[e].line, sc->body == BODY_CHAIN ? "the chain's rest length" : what, sc->edges[e].rest);
+    }
+    return warnings;
 }
 
 static void print_bound(const scene *sc)
@@ -258,7 +326,8 @@ static int cmd_check(int argc, char **argv)
     int rc = 0;
     scene sc;
     char fmtbuf[96], effects[160];
-    const char *path = parse_options("check", argc, argv, &o, "ao", &rc);
+    int warnings;
+    const char *path = parse_options("check", argc, argv, &o, "aos", &rc);
     if (!path) {
         if (o.help) fputs(usage_check, stdout);
         return rc;
@@ -269,7 +338,11 @@ static int cmd_check(int argc, char **argv)
            format_name(sc.number, &sc.fmt, fmtbuf, sizeof fmtbuf), sc.frames, sc.substeps, sc.iterations,
            sc.integrator == INTEGRATOR_VERLET ? "verlet" : "euler", scene_effects_string(&sc, effects, sizeof effects));
     print_bound(&sc);
-    warn_bound(&sc);
+    warnings = warn_bound(&sc) + warn_constants(&sc);
+    if (warnings && o.strict) {
+        fprintf(stderr, "%s: %d warning(s) and --strict\n", sc.path, warnings);
+        rc = EXIT_BAD_INPUT;
+    }
     if (o.auto_substeps && !apply_auto_substeps("check", &sc, o.auto_substeps)) rc = EXIT_BAD_INPUT;
     scene_free(&sc);
     return rc;
