@@ -390,7 +390,7 @@ static void dp_init(edge_kind kind)
     dp_sc.prev = dp_prev;
     dp_sc.pinned = dp_pinned;
     dp_sc.mass = 1;
-    dp_edge = (scene_edge){0, 1, kind, 0.0, 0, 0};
+    dp_edge = (scene_edge){0, 1, kind, 0.0, 0, 0, 0};
     dp_sc.n_edges = 1;
     dp_sc.edges = &dp_edge;
     dp_sc.en_constraints = kind != EDGE_SPRING;
