@@ -212,6 +212,7 @@ int main(int argc, char **argv)
     }
     const char *why = sc.body != BODY_CHAIN ? "graph bodies" : sc.integrator != INTEGRATOR_VERLET ? "explicit Euler"
                       : sc.en_springs ? "springs" : sc.en_ground ? "the ground" : sc.en_mouse && sc.mouse == MOUSE_GRAB ? "the grab form of the mouse"
+                      : sc.projection == PROJECTION_PREVIOUS ? "projection = previous"
                       : NULL;
     if (why) {
         fprintf(stderr, "%s:1: cpu_rope runs chains with gravity, damping, the mouse impulse and constraints; not %s\n", path, why);

@@ -9,6 +9,9 @@
  *   LEN(d)                 length of a 3-vector (fixed: fx_sqrt of the exact sum of squares)
  *   DIV(a, b, dz)          a / b for a, b >= 0; *dz set when b == 0
  *   SDIV(a, b, dz)         a / b for a signed, b >= 0
+ *   UNIT(a, b, dz)         a / b for |a| <= b, a unit-vector component (fixed: W-2 fraction bits)
+ *   UMUL(a, u)             a times a unit-vector component
+ *   LEG(h, d, miss)        sqrt(h^2 - |d|^2) (fixed: fx_sqrt of the exact difference); *miss if |d| > h
  *   FROM(x)                a scene constant in this number type
  *   LESS(a, b)             a < b
  *
@@ -199,6 +202,43 @@ void P(mouse_node)(SIM *s, int i)
     s->prev[i][0] = LESS(s->mouse[0], s->prev[i][0]) ? ADD(s->pos[i][0], s->impulse) : SUB(s->pos[i][0], s->impulse);
 }
 
+/*
+ * Projection along the previous direction (projection = previous; SHAKE). With q the
+ * constraint's vector now (anchor to the moving end) and u the unit vector of the same
+ * constraint at the start of the substep (the previous positions), the end moves along u
+ * to where the length is `rest`: s = q.u, p = q - s u (q's part across u), and the new
+ * vector is p + sgn(s) sqrt(rest^2 - |p|^2) u, the nearer of the two points where the
+ * line along u meets the sphere of radius `rest`. The correction is along the start-of-
+ * substep direction, as in a constraint force evaluated at the old positions, which keeps
+ * energy bounded where the current direction loses it. False (the caller projects along
+ * the current direction) when the start direction has no length or the line misses the
+ * sphere (|p| > rest), counted in s->fallbacks.
+ */
+static bool P(along_previous)(SIM *s, const NUM q[3], int from, int to, NUM rest, NUM out[3])
+{
+    NUM r[3] = {FROM(0), FROM(0), FROM(0)}, u[3] = {FROM(0), FROM(0), FROM(0)}, p[3] = {FROM(0), FROM(0), FROM(0)};
+    NUM len, dot = FROM(0), leg;
+    bool zero, miss;
+    for (int k = 0; k < s->dim; k++) r[k] = SUB(s->prev[to][k], s->prev[from][k]);
+    len = LEN(r);
+    if (!LESS(FROM(0), len)) {
+        s->fallbacks++;
+        return false;
+    }
+    for (int k = 0; k < s->dim; k++) {
+        u[k] = UNIT(r[k], len, &zero);
+        dot = ADD(dot, UMUL(q[k], u[k]));
+    }
+    for (int k = 0; k < s->dim; k++) p[k] = SUB(q[k], UMUL(dot, u[k]));
+    leg = LEG(rest, p, &miss);
+    if (miss) {
+        s->fallbacks++;
+        return false;
+    }
+    for (int k = 0; k < s->dim; k++) out[k] = LESS(dot, FROM(0)) ? SUB(p[k], UMUL(leg, u[k])) : ADD(p[k], UMUL(leg, u[k]));
+    return true;
+}
+
 /* The point at distance `dist` from node `from`, toward node c. False for a zero length. */
 static bool P(toward)(SIM *s, int from, int c, NUM out[3])
 {
@@ -206,6 +246,10 @@ static bool P(toward)(SIM *s, int from, int c, NUM out[3])
     NUM ratio;
     bool zero;
     for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[c][k], s->pos[from][k]);
+    if (s->sc->projection == PROJECTION_PREVIOUS && P(along_previous)(s, d, from, c, s->dist, out)) {
+        for (int k = 0; k < s->dim; k++) out[k] = ADD(s->pos[from][k], out[k]);
+        return true;
+    }
     ratio = DIV(s->dist, LEN(d), &zero);
     if (zero) {
         s->skipped++;
@@ -243,32 +287,39 @@ bool P(centred_node)(SIM *s, int i)
  * d = b - a is shared, a += e/2 and b -= e/2 (so the midpoint stays exactly), or taken
  * whole by the free end when the other is fixed.
  */
+/* The excess of edge a-b on axis k shared: half each, or all of it on the free end. */
+static void P(share)(SIM *s, int a, int b, bool fa, bool fb, int k, NUM excess)
+{
+    if (!fa && !fb) {
+        NUM half = HALF(excess);
+        s->pos[a][k] = ADD(s->pos[a][k], half);
+        s->pos[b][k] = SUB(s->pos[b][k], half);
+    } else if (fa) {
+        s->pos[b][k] = SUB(s->pos[b][k], excess);
+    } else {
+        s->pos[a][k] = ADD(s->pos[a][k], excess);
+    }
+}
+
 void P(pair_edge)(SIM *s, int e)
 {
     const scene_edge *ed = &s->sc->edges[e];
     int a = ed->a, b = ed->b;
     bool fa = P(node_fixed)(s, a), fb = P(node_fixed)(s, b), zero;
-    NUM d[3] = {FROM(0), FROM(0), FROM(0)};
+    NUM d[3] = {FROM(0), FROM(0), FROM(0)}, moved[3];
     NUM ratio;
     if (fa && fb) return;
     for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[b][k], s->pos[a][k]);
+    if (s->sc->projection == PROJECTION_PREVIOUS && P(along_previous)(s, d, a, b, s->rest[e], moved)) {
+        for (int k = 0; k < s->dim; k++) P(share)(s, a, b, fa, fb, k, SUB(d[k], moved[k]));
+        return;
+    }
     ratio = DIV(s->rest[e], LEN(d), &zero);
     if (zero) {
         s->skipped++;
         return;
     }
-    for (int k = 0; k < s->dim; k++) {
-        NUM excess = SUB(d[k], MUL(d[k], ratio));
-        if (!fa && !fb) {
-            NUM half = HALF(excess);
-            s->pos[a][k] = ADD(s->pos[a][k], half);
-            s->pos[b][k] = SUB(s->pos[b][k], half);
-        } else if (fa) {
-            s->pos[b][k] = SUB(s->pos[b][k], excess);
-        } else {
-            s->pos[a][k] = ADD(s->pos[a][k], excess);
-        }
-    }
+    for (int k = 0; k < s->dim; k++) P(share)(s, a, b, fa, fb, k, SUB(d[k], MUL(d[k], ratio)));
 }
 
 /*

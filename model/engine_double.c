@@ -11,6 +11,14 @@ static inline double dbl_div(double a, double b, bool *zero)
     return *zero ? 0 : a / b;
 }
 
+/* sqrt(h^2 - |d|^2); *miss when |d| > h (fx_leg's double twin) */
+static inline double dbl_leg(double h, const double d[3], bool *miss)
+{
+    double r = h * h - (d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);
+    *miss = r < 0;
+    return *miss ? 0 : sqrt(r);
+}
+
 #define SIM sim_dbl
 #define P(name) sim_dbl_##name
 #define NUM double
@@ -23,6 +31,9 @@ static inline double dbl_div(double a, double b, bool *zero)
 #define LEN(d) sqrt((d)[0] * (d)[0] + (d)[1] * (d)[1] + (d)[2] * (d)[2])
 #define DIV(a, b, dz) dbl_div((a), (b), (dz))
 #define SDIV(a, b, dz) dbl_div((a), (b), (dz))
+#define UNIT(a, b, dz) dbl_div((a), (b), (dz))
+#define UMUL(a, u) ((a) * (u))
+#define LEG(h, d, miss) dbl_leg((h), (d), (miss))
 #define FROM(x) ((double)(x))
 #define LESS(a, b) ((a) < (b))
 

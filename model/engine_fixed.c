@@ -18,6 +18,9 @@
 #define LEN(d) fx_sqrt(F_, fx_sumsq((d)[0], (d)[1], (d)[2]))
 #define DIV(a, b, dz) fx_div(F_, (uint32_t)(a), (uint32_t)(b), (dz))
 #define SDIV(a, b, dz) fx_div_signed(F_, (a), (b), (dz))
+#define UNIT(a, b, dz) fx_unit_div(F_, (a), (b), (dz))
+#define UMUL(a, u) fx_mul_unit(F_, (a), (u))
+#define LEG(h, d, miss) fx_leg(F_, (h), (d)[0], (d)[1], (d)[2], (miss))
 #define FROM(x) fx_from_double(F_, (x))
 #define LESS(a, b) ((a) < (b))
 

@@ -94,6 +94,19 @@ fx_t fx_div(const fx_format *fmt, uint32_t num, uint32_t den, bool *div_by_zero)
     return (fx_t)(quot > max ? max : quot);
 }
 
+fx_t fx_unit_div(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero)
+{
+    fx_format u = fx_unit_format(fmt);
+    return fx_div_signed(&u, num, den, div_by_zero);
+}
+
+fx_t fx_leg(const fx_format *fmt, fx_t h, fx_t dx, fx_t dy, fx_t dz, bool *miss)
+{
+    uint64_t hh = (uint64_t)((int64_t)h * h), dd = fx_sumsq(dx, dy, dz);
+    *miss = dd > hh;
+    return *miss ? 0 : fx_sqrt(fmt, hh - dd);
+}
+
 fx_t fx_div_signed(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero)
 {
     uint32_t mag = num < 0 ? (uint32_t)(-(int64_t)num) : (uint32_t)num;

@@ -102,6 +102,12 @@ static inline uint64_t fx_sumsq(fx_t dx, fx_t dy, fx_t dz)
 
 /* Square root, see the header comment. Returns a value in 0..fx_max. */
 fx_t fx_sqrt(const fx_format *fmt, uint64_t radicand);
+/*
+ * The other leg of a right triangle with hypotenuse h and one leg (dx, dy, dz):
+ * fx_sqrt of the exact 2W-bit difference h^2 - |d|^2. When |d| > h there is no such
+ * triangle: *miss is set and 0 returned.
+ */
+fx_t fx_leg(const fx_format *fmt, fx_t h, fx_t dx, fx_t dy, fx_t dz, bool *miss);
 
 /*
  * Unsigned divide: round(num * 2^F / den) for num, den < 2^W, in 0..fx_max.
@@ -112,6 +118,24 @@ fx_t fx_div(const fx_format *fmt, uint32_t num, uint32_t den, bool *div_by_zero)
 /* Signed numerator, positive denominator: sign and magnitude around fx_div. */
 fx_t fx_div_signed(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero);
 
+/*
+ * Unit vectors (projection = previous) are held with W-2 fraction bits, Q2.(W-2), so that
+ * a correction of length L placed along one is off by L 2^-(W-2) rather than L 2^-F (at
+ * Q16.16 and L = 100, 65 LSB: enough error to drain a pendulum's energy). fx_unit_div is
+ * fx_div_signed with F = W-2 (num/den for |num| <= den: DIV_BITS bits resolved);
+ * fx_mul_unit is a Q.F value times a unit component, the exact product rounded by W-2.
+ */
+static inline fx_format fx_unit_format(const fx_format *fmt)
+{
+    fx_format u = *fmt;
+    u.frac = fmt->width - 2;
+    return u;
+}
+static inline fx_t fx_mul_unit(const fx_format *fmt, fx_t a, fx_t u)
+{
+    return fx_sat(fmt, fx_round_shift((int64_t)a * u, fmt->width - 2));
+}
+fx_t fx_unit_div(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero);
 /* Conversions for scene constants and reports (not used inside the datapath). */
 fx_t fx_from_double(const fx_format *fmt, double v);
 double fx_to_double(const fx_format *fmt, fx_t v);

@@ -19,6 +19,8 @@ static const char *reject(const scene *sc, const char *section, char *err, size_
 const char *hw_check(const scene *sc, char *err, size_t len)
 {
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
+    if (sc->en_constraints && sc->projection == PROJECTION_PREVIOUS)
+        return reject(sc, "constraints", err, len, "projection = previous (the C model runs it)");
     hw_params hp;
     hw_params_of(sc, &hp);
     char why[256];

@@ -431,6 +431,13 @@ static int handler(void *user, const char *section, const char *key, const char 
             sc->order = (constraint_order)i;
             return 1;
         }
+        if (!strcmp(key, "projection")) {
+            static const char *const c[] = {"current", "previous", 0};
+            int i;
+            if (!parse_choice(p, key, value, c, &i)) return 0;
+            sc->projection = (constraint_projection)i;
+            return 1;
+        }
         break;
     case S_SPRINGS:
         if (!strcmp(key, "ks")) return parse_double(p, key, value, 0, 1e12, &sc->ks);

@@ -34,6 +34,11 @@ typedef enum { RULE_CENTRED, RULE_PAIRWISE } constraint_rule;
    the edges of a greedy edge colouring, colour by colour). Within a colour no two
    constraints share a node, so a pipeline may have a whole colour in flight. */
 typedef enum { ORDER_SERIAL, ORDER_REDBLACK } constraint_order;
+/* The direction a distance constraint corrects along: the current one (references 000-002:
+   the node goes to the point at the rest length toward its neighbour as they are now) or
+   the previous one (SHAKE: along the constraint's direction at the start of the substep,
+   to where the length is the rest length; it keeps energy bounded). */
+typedef enum { PROJECTION_CURRENT, PROJECTION_PREVIOUS } constraint_projection;
 typedef enum { INTEGRATOR_VERLET, INTEGRATOR_EULER } integrator_kind;
 typedef enum { MOUSE_IMPULSE, MOUSE_GRAB } mouse_mode;
 typedef enum { NUMBER_FIXED, NUMBER_DOUBLE } number_kind;
@@ -92,6 +97,7 @@ typedef struct {
     mouse_event *events;
     constraint_rule rule;
     constraint_order order;
+    constraint_projection projection;
     int n_colours;  /* colours of the constraint edges (1 when serial or without edges) */
     double ks, kd;
     bool kd_per_step; /* damper acts on per-step velocity x - x- (reference 001) */

@@ -39,7 +39,8 @@ extern "C" {
     bool mouse_down;                                                                                    \
     int grabbed; /* node following the pointer, or -1 */                                                \
     int frame;   /* frames completed */                                                                 \
-    long skipped; /* corrections skipped for a zero length */
+    long skipped; /* corrections skipped for a zero length */                                          \
+    long fallbacks; /* projection = previous: corrections made along the current direction instead */
 
 typedef struct sim_fx {
     STRAND_SIM_FIELDS(fx_t)

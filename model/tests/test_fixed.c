@@ -147,6 +147,47 @@ static void test_div_w12_every_pair(void **state)
     exhaust_div(12, 8, 11);
 }
 
+/* fx_unit_div at full precision is num / den rounded to nearest at W-2 fraction bits:
+   |u den - num 2^(W-2)| <= den / 2, for every |num| <= den at W = 8 and 10. */
+static void exhaust_unit_div(int w)
+{
+    fx_format f = {w, w / 2, w - 1, w - 1};
+    for (int den = 1; den <= (1 << (w - 1)) - 1; den++)
+        for (int num = -den; num <= den; num++) {
+            bool dz = true;
+            fx_t u = fx_unit_div(&f, num, den, &dz);
+            int64_t err = (int64_t)u * den - ((int64_t)num << (w - 2));
+            if (dz || 2 * (err < 0 ? -err : err) > den) fail_msg("W=%d: %d / %d gave %d (Q2.%d)", w, num, den, u, w - 2);
+        }
+}
+
+static void test_unit_div_every_pair(void **state)
+{
+    (void)state;
+    exhaust_unit_div(8);
+    exhaust_unit_div(10);
+}
+
+/* fx_leg: the root r of h^2 - |d|^2 (in Q2F) rounds it to nearest: (r - 1/2)^2 <= x < (r + 1/2)^2
+   in LSB units; *miss exactly when |d| > h. Every h, dx, dy at W = 8 (full precision). */
+static void test_leg_w8(void **state)
+{
+    fx_format f = {8, 4, 7, 7};
+    (void)state;
+    for (int h = 0; h <= 127; h++)
+        for (int dx = -128; dx <= 127; dx++)
+            for (int dy = -128; dy <= 127; dy += 3) {
+                bool miss;
+                fx_t r = fx_leg(&f, h, dx, dy, 0, &miss);
+                int64_t x = (int64_t)h * h - ((int64_t)dx * dx + (int64_t)dy * dy);
+                if (miss != (x < 0)) fail_msg("h=%d d=(%d,%d): miss=%d", h, dx, dy, miss);
+                if (miss) continue;
+                /* 4x = (2r)^2 scale: (2r - 1)^2 <= 4x < (2r + 1)^2, unless r saturated at fx_max */
+                if (r < fx_max(&f) && !((r == 0 || (2 * r - 1) * (2 * r - 1) <= 4 * x) && 4 * x < (2 * r + 1) * (2 * r + 1)))
+                    fail_msg("h=%d d=(%d,%d): root %d of %lld", h, dx, dy, r, (long long)x);
+            }
+}
+
 /* ---- W=32: random and edge vectors ---- */
 
 static uint64_t rng_state = 0x9e3779b97f4a7c15ull;
@@ -283,6 +324,8 @@ int main(void)
         cmocka_unit_test(test_saturation_never_wraps),
         cmocka_unit_test(test_zero_length_is_flagged),
         cmocka_unit_test(test_format_check),
+        cmocka_unit_test(test_unit_div_every_pair),
+        cmocka_unit_test(test_leg_w8),
     };
     fesetround(FE_TONEAREST);
     return cmocka_run_group_tests_name("fixed-point arithmetic", tests, NULL, NULL);
