@@ -5,6 +5,7 @@
  *   SIM, P(name)           the state type and the function prefix
  *   NUM                    the number type
  *   ADD SUB MUL AVG HALF   arithmetic (fixed: saturating, rounded ties-to-even)
+ *   MAC2(a, b, c, d)       a b + c d (fixed: the exact products summed, rounded once)
  *   ABS                    magnitude
  *   LEN(d)                 length of a 3-vector (fixed: fx_sqrt of the exact sum of squares)
  *   DIV(a, b, dz)          a / b for a, b >= 0; *dz set when b == 0
@@ -162,7 +163,7 @@ void P(spring_edge)(SIM *s, int e)
         vn = ADD(vn, MUL(SUB(vb, va), u[k]));
     }
     stretch = SUB(len, s->rest[e]);
-    f = ADD(MUL(s->ks, stretch), MUL(s->kd, vn));
+    f = MAC2(s->ks, stretch, s->kd, vn);
     for (int k = 0; k < s->dim; k++) {
         NUM fk = MUL(f, u[k]);
         s->acc[a][k] = ADD(s->acc[a][k], fk);

@@ -36,5 +36,6 @@ static inline double dbl_leg(double h, const double d[3], bool *miss)
 #define LEG(h, d, miss) dbl_leg((h), (d), (miss))
 #define FROM(x) ((double)(x))
 #define LESS(a, b) ((a) < (b))
+#define MAC2(a, b, c, d) ((a) * (b) + (c) * (d))
 
 #include "engine_body.h"

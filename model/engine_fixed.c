@@ -23,5 +23,6 @@
 #define LEG(h, d, miss) fx_leg(F_, (h), (d)[0], (d)[1], (d)[2], (miss))
 #define FROM(x) fx_from_double(F_, (x))
 #define LESS(a, b) ((a) < (b))
+#define MAC2(a, b, c, d) fx_mac2(F_, (a), (b), (c), (d))
 
 #include "engine_body.h"

@@ -85,6 +85,15 @@ static inline fx_t fx_mul(const fx_format *fmt, fx_t a, fx_t b)
     return fx_sat(fmt, fx_round_shift((int64_t)a * b, fmt->frac));
 }
 
+/* a * b + c * d: the two exact 2W-bit products summed, rounded once (ties to even), saturated.
+   The spring's f = ks (len - rest) + kd vn: the damper term alone is a few LSBs a substep. */
+static inline fx_t fx_mac2(const fx_format *fmt, fx_t a, fx_t b, fx_t c, fx_t d)
+{
+    int64_t p = (int64_t)a * b, q = (int64_t)c * d;
+    /* only (-2^31)^2 + (-2^31)^2 = 2^63 leaves int64: clamped, the result saturates anyway */
+    int64_t sum = p > 0 && q > INT64_MAX - p ? INT64_MAX : p + q;
+    return fx_sat(fmt, fx_round_shift(sum, fmt->frac));
+}
 /* (a + b) / 2 rounded ties to even, from the exact (W+1)-bit sum. Never overflows. */
 static inline fx_t fx_avg(const fx_format *fmt, fx_t a, fx_t b)
 {

@@ -12,9 +12,11 @@
  *     len = fx_sqrt(d.x^2 + d.y^2 [+ d.z^2])     radicand: exact 2W-bit sum of squares
  *     u.k = fx_div_signed(d.k, len)              |d.k| / len on the unsigned divider, sign restored
  *     vn  = (v_b.x - v_a.x) u.x + (v_b.y - v_a.y) u.y [+ (v_b.z - v_a.z) u.z]
- *     f   = ks (len - rest) + kd vn
+ *     f   = ks (len - rest) + kd vn               the two exact products summed, rounded once
  *     F.k = f u.k                                 the force on A; B takes -F
- * Every product is fx_mul (rounded ties-to-even, saturating), every sum fx_add.
+ * Every other product is fx_mul (rounded ties-to-even, saturating), every sum fx_add.
+ * f is rounded once (model/fixed.h fx_mac2): rounding kd vn on its own lost the damper,
+ * a few LSBs a substep, to rounding (the decay rate 80 % short at 8 substeps, Q16.16).
  * ks and kd are scaled by the model (init()) so that F is a position change per
  * substep. valid = 0 when len = 0 (no direction): the caller writes nothing.
  *
@@ -23,7 +25,10 @@
  *
  * Datapath: one W x W multiplier shared by the DIM squares and 2 DIM + 2 products (its
  * exact 2W-bit product for the squares), one fx_sqrt, one fx_div used for each u.k;
- * the axis counter `ax` picks the lane. The multiplier is pipelined as in toward.v:
+ * the axis counter `ax` picks the lane, a 2W-bit register keeps the exact ks (len - rest)
+ * until kd vn's exact product is there; their sum (clamped to 2W bits: beyond them f
+ * saturates either way) takes the rounder's place for that product. The multiplier is
+ * pipelined as in toward.v:
  * operands registered in the cycle an operation is issued, the exact product in the
  * next (a square is used in the cycle after), the rounded product in the cycle after
  * that, used one cycle later (added where the formula adds). An operation that needs
@@ -88,7 +93,8 @@ module spring_force #(
     reg [1:0]       ax_q, ax_d;
     reg             done_q, done_d;
     reg [DIM*W-1:0] d_q, dv_q, u_q;
-    reg [W-1:0]     rest_q, ks_q, kd_q, len_q, vn_q, t_q, f_q;
+    reg [W-1:0]     rest_q, ks_q, kd_q, len_q, vn_q, f_q;
+    reg [2*W-1:0]   t_q;  // ks (len - rest), exact
     reg             dz_q;
     reg [2*W-1:0]   sq_q;   // the squares so far
 
@@ -148,7 +154,8 @@ module spring_force #(
     wire           s3_last = s3_ax == DIM_LAST;
     wire           use_sq  = s2_v && s2_kind == K_SQ;
     wire           use_vn  = s3_v && s3_kind == K_VN;
-    wire           use_ks  = s3_v && s3_kind == K_KS;
+    wire           keep_ks = s2_v && s2_kind == K_KS;  // exact: kept for f's sum
+    wire           sum_kd  = s2_v && s2_kind == K_KD;  // exact: summed with it, then rounded
     wire           use_kd  = s3_v && s3_kind == K_KD;
     wire           use_f   = s3_v && s3_kind == K_F;
     always @(posedge clk) begin
@@ -172,13 +179,18 @@ module spring_force #(
         s3_kind <= s2_kind;
         s3_ax   <= s2_ax;
     end
-    wire [W-1:0] acc_sum;  // vn + dv[ax] u[ax], then t + kd vn
+    wire [W-1:0] acc_sum;  // vn + dv[ax] u[ax]
+    // f's exact sum: ks (len - rest) + kd vn, clamped to 2W bits, rounded in place of kd vn
+    wire [2*W:0]   mac_wide = {t_q[2*W-1], t_q} + {prod_q[2*W-1], prod_q};
+    wire           mac_over = mac_wide[2*W] != mac_wide[2*W-1];
+    wire [2*W-1:0] mac      = mac_over ? {mac_wide[2*W], {(2*W-1){!mac_wide[2*W]}}} : mac_wide[2*W-1:0];
+    wire [2*W-1:0] round_in = sum_kd ? mac : prod_q;
     /* verilator lint_off PINCONNECTEMPTY */
     // the saturation flags are not needed: the saturated value is the result
     fx_mul #(.W(W), .F(F), .ROUND(1'b0)) u_mul (.a(op_a), .b(op_b), .y(), .prod(mul_exact), .sat());
-    fx_round #(.W(W), .F(F)) u_round (.prod(prod_q), .y(mul_round), .sat());
+    fx_round #(.W(W), .F(F)) u_round (.prod(round_in), .y(mul_round), .sat());
     fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len_q), .b(rest_q), .y(stretch), .sat());
-    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(use_kd ? t_q : vn_q), .b(round_q), .y(acc_sum), .sat());
+    fx_add #(.W(W), .SUB(0)) u_acc (.sub(1'b0), .a(vn_q), .b(round_q), .y(acc_sum), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- square root and divider ----
@@ -258,8 +270,8 @@ module spring_force #(
             if (ax_q == 2'd0) dz_q <= div_zero;  // len = 0: no direction
         end
         if (use_vn) vn_q <= s3_ax == 2'd0 ? round_q : acc_sum;
-        if (use_ks) t_q  <= round_q;
-        if (use_kd) f_q  <= acc_sum;
+        if (keep_ks) t_q <= prod_q;
+        if (use_kd) f_q <= round_q;
     end
 
     assign busy = state_q != S_IDLE;

@@ -723,13 +723,13 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
       "position projection, too few iterations).")
     A("- **stretch**: the largest |l - rest| / rest of any link, over the run (`max`) and at the last frame (`rest`).")
     A("")
-    A("**Cycles per frame.** For a scene the RTL builds (`hw_check()` passes: a 2D chain at rest, centred or pairwise "
-      "rule) the figure is `hw_cycles_per_frame()` (model/timing.c), the RTL's formula "
-      "`substeps (K + 2 + iterations pass) + 1` with `pass = 2 + M K (2 (SQRT_BITS + DIV_BITS + 9) + 2)` for the "
-      "centred rule and `(M K - 1)(SQRT_BITS + DIV_BITS + 14)` for the pairwise rule (docs/architecture.md), which the "
-      "test suite checks against the RTL every frame. Scenes the RTL does not build (the spring pair: a graph with a "
-      "spring) get an **estimate** from model/sweep.c (`cycles_estimate`: a rod as pair_sequencer's link, a spring a "
-      "root, one divide per axis and 8 cycles); the study's fronts and recommendations use no estimate.")
+    est = sorted({r["scene"] for r in results if "error" not in r and r.get("cycles_kind") != "rtl-formula"})
+    A("**Cycles per frame.** For a scene the RTL builds (`hw_check()` passes) the figure is `hw_cycles_per_frame()` "
+      "(model/timing.c): the RTL's cycle formula for the build the scene gets (docs/architecture.md gives it for both "
+      "architectures), which the test suite checks against the RTL every frame. "
+      + (f"Scenes the RTL does not build ({', '.join(est)}) get an **estimate** from model/sweep.c (`cycles_estimate`); "
+         "the study's fronts and recommendations use no estimate." if est else
+         "Every point of this study is a scene the RTL builds: no figure here is an estimate."))
     A("")
     # RTL sample
     A("### The cycle formula against the RTL")
@@ -784,7 +784,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
                         and get(r, "check_dbl.error_pct") is not None), default=None)
     A(f"  The best any setting reaches in double is {g(cat_best_dbl)} % of span: that floor is the difference "
       f"between a chain of {cat['nodes']} point masses and the continuous catenary, not an error of Strand.")
-    A(f"- **Damped spring pair** (`sim/scenes/spring_pair.scene`, C model only): omega_d = "
+    A(f"- **Damped spring pair** (`sim/scenes/spring_pair.scene`): omega_d = "
       f"{g(get(spr, 'check_fx.omega_d'), 5)} rad/s in fixed point, {g(get(spr, 'check_dbl.omega_d'), 5)} in double, "
       f"against {g(get(spr, 'check_fx.omega_d_reference'), 5)} ({g(get(spr, 'check_fx.error_pct'))} %); decay rate "
       f"{g(get(spr, 'check_fx.decay'), 4)} /s (double {g(get(spr, 'check_dbl.decay'), 4)}) against "
@@ -798,6 +798,15 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     for r in sp:
         A(f"  | {r['substeps']} | {g(get(r, 'check_fx.error_pct'))} % | {g(get(r, 'check_dbl.error_pct'))} % | "
           f"{g(get(r, 'check_fx.decay_error_pct'))} % | {g(get(r, 'check_dbl.decay_error_pct'))} % |")
+    A("")
+    met = [r for r in sp if abs(get(r, "check_fx.decay_error_pct") or 1e9) <= 1]
+    missed = [r for r in sp if r not in met]
+    A(f"  Target: the fixed-point decay rate within 1 % of {g(get(spr, 'check_fx.decay_reference'), 4)} /s at "
+      f"{', '.join(str(r['substeps']) for r in sp)} substeps (Q16.16). "
+      + (f"Met at {', '.join(str(r['substeps']) for r in met)}" if met else "Met at none")
+      + (f"; missed at {', '.join(str(r['substeps']) + ' (' + g(get(r, 'check_fx.decay_error_pct')) + ' %)' for r in missed)}"
+         if missed else "") + ". f = ks (len - rest) + kd vn is summed from the two exact products and rounded once "
+      "(docs/model.md); rounded on its own, kd vn, a few LSBs a substep, rounded away.")
     bad_damp = [r for r in sp if abs(get(r, "check_fx.decay_error_pct") or 0) > 2 * abs(get(r, "check_dbl.decay_error_pct") or 0) + 1]
     if bad_damp:
         A("")
