@@ -76,10 +76,13 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # (twice the 4x5's units and multipliers: two hours or more, longer than the whole flow
 # should take); 16x16_pipe is tried and does not fit (its multipliers).
 PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [1], "8x128_pipe": []}
+# The larger serial builds are placed on the ECP5 with one seed too (a 16x16 run takes a
+# quarter of an hour); the 4x5, the build every figure is checked on, with all of SEEDS.
+SERIAL_SEEDS = {"8x8": [1], "16x16": [1]}
 
 
 def seeds_of(build):
-    return PIPE_SEEDS.get(build, SEEDS)
+    return PIPE_SEEDS.get(build, SERIAL_SEEDS.get(build, SEEDS))
 CHECK_CONFIG = "4x5"      # the build that `check` and the target use
 TARGET_CELLS = 18000      # the 4x5 build's budget in generic cells
 COURSE_CELLS = 541785     # the course project's RTL, with no real square root nor divider
@@ -597,7 +600,9 @@ def report(bdir, gen, out):
     w("")
     w(f"Cells of strand_core (`synth_ecp5`); then place and route of the core with its AXI4-Lite shell "
       f"(strand_axil) behind tb/pnr_wrap.v (its bus behind shift registers, 5 pins: every path "
-      f"register to register), nextpnr-ecp5 `{' '.join(ECP5_ARGS)}`, seeds {', '.join(map(str, SEEDS))}. "
+      f"register to register), nextpnr-ecp5 `{' '.join(ECP5_ARGS)}`, seeds {', '.join(map(str, SEEDS))} "
+      f"({'; '.join(b + ': ' + ', '.join(map(str, v)) for b, v in SERIAL_SEEDS.items())}: a run of the larger builds "
+      "taking a quarter of an hour here). "
       f"fmax is nextpnr's post-route figure for `clk` (the goal is 100 MHz); DPR16X4 is LUT RAM "
       f"(16 words x 4 bits), DP16KD block RAM.")
     w("")
@@ -824,7 +829,9 @@ def cmd_all(a):
         print(f"FAIL synth: {len(failures)} flow(s) failed; {a.out} not written", file=sys.stderr)
         return 1
     # place and route: every seed on the ECP5; on the UP5K one seed first, the others if it fits
-    jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in seeds_of(b)]
+    # the long runs first (one seed of each build, largest first), then the other seeds
+    first_jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in seeds_of(b)[:1]]
+    jobs = first_jobs + [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in seeds_of(b)[1:]]
     jobs += [(b, "ice40", SEEDS[0]) for b, _, p in BUILDS if p != "ecp5p"]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
         list(ex.map(lambda j: pnr_task(*j), jobs))
