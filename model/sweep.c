@@ -1,7 +1,7 @@
 /*
  * sweep.c - one point of the accuracy study (docs/accuracy.md, scripts/accuracy.py).
  *
- *   sweep SCENE [--check none|period|catenary|spring|energy] [--frames N]
+ *   sweep SCENE [--check none|period|catenary|spring|energy] [--frames N] [--reverse]
  *
  * Runs SCENE in fixed point (its [format]) and in double, frame by frame, and prints
  * one JSON object on stdout:
@@ -20,6 +20,11 @@
  *                 stretch, decay rate from the peaks, against sqrt(w0^2 - g^2) and kd/m;
  *       energy    pendulum: turning-point height above the lowest point (the energy at
  *                 zero speed), last swings against the first, % drift.
+ * --reverse: then run the scene back as long (current and previous positions swapped,
+ * swapped again at the end) and report how far each run lands from its start: Verlet is
+ * time-reversible, so a free body returns bit for bit; a constraint mode departs by what
+ * it does not undo ("back_fx"/"back_dbl": largest node distance in rest lengths, and for
+ * fixed point in LSB).
  * Exit status: 0, or 2 for a bad scene or argument (message on stderr).
  */
 #define _POSIX_C_SOURCE 200809L
@@ -265,6 +270,35 @@ static void check_json(const char *name, const char *check, const scene *sc, con
     free(v);
 }
 
+/* Time runs backward from here: swap the current and previous positions (Verlet). */
+static void swap_time(runner *r)
+{
+    for (int i = 0; i < r->sc->n_nodes; i++)
+        for (int k = 0; k < 3; k++) {
+            if (r->kind == NUMBER_FIXED) {
+                fx_t t = r->fx.pos[i][k];
+                r->fx.pos[i][k] = r->fx.prev[i][k];
+                r->fx.prev[i][k] = t;
+            } else {
+                double t = r->dbl.pos[i][k];
+                r->dbl.pos[i][k] = r->dbl.prev[i][k];
+                r->dbl.prev[i][k] = t;
+            }
+        }
+}
+
+/* Largest node distance between two position sets. */
+static double largest_gap(int n, double (*a)[3], double (*b)[3])
+{
+    double worst = 0;
+    for (int i = 0; i < n; i++) {
+        double e2 = 0;
+        for (int k = 0; k < 3; k++) e2 += (a[i][k] - b[i][k]) * (a[i][k] - b[i][k]);
+        worst = fmax(worst, sqrt(e2));
+    }
+    return worst;
+}
+
 /* The check's per-frame signal. */
 static double signal(const char *check, const scene *sc, double (*p)[3])
 {
@@ -281,20 +315,22 @@ int main(int argc, char **argv)
 {
     const char *path = NULL, *check = "none";
     int frames = -1;
+    bool reverse = false;
     char err[SCENE_ERR_LEN];
     scene sc;
     for (int i = 1; i < argc; i++) {
         if (!strcmp(argv[i], "--check") && i + 1 < argc) check = argv[++i];
         else if (!strcmp(argv[i], "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
+        else if (!strcmp(argv[i], "--reverse")) reverse = true;
         else if (argv[i][0] != '-' && !path) path = argv[i];
         else {
-            fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy] [--frames N]\n");
+            fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy] [--frames N] [--reverse]\n");
             return 2;
         }
     }
     if (!path || (strcmp(check, "none") && strcmp(check, "period") && strcmp(check, "catenary") && strcmp(check, "spring") &&
                   strcmp(check, "energy"))) {
-        fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy] [--frames N]\n");
+        fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy] [--frames N] [--reverse]\n");
         return 2;
     }
     if (!scene_load(&sc, path, err)) {
@@ -326,6 +362,13 @@ int main(int argc, char **argv)
         return 1;
     }
     scale = stats_length_scale(&sc);
+    double (*start_f)[3] = calloc((size_t)n, sizeof *start_f), (*start_d)[3] = calloc((size_t)n, sizeof *start_d);
+    if (!start_f || !start_d) {
+        fprintf(stderr, "sweep: out of memory\n");
+        return 1;
+    }
+    runner_positions(&fx, start_f);
+    runner_positions(&dbl, start_d);
     for (int f = 0; f < frames; f++) {
         double t0 = now();
         runner_frame(&fx);
@@ -360,6 +403,27 @@ int main(int argc, char **argv)
         td.last_speed = fmax(td.last_speed, sqrt(vd[i][0] * vd[i][0] + vd[i][1] * vd[i][1] + vd[i][2] * vd[i][2]));
     }
 
+    double back_f = NAN, back_d = NAN;
+    if (reverse) {
+        double (*bf)[3] = calloc((size_t)n, sizeof *bf), (*bd)[3] = calloc((size_t)n, sizeof *bd);
+        if (!bf || !bd) {
+            fprintf(stderr, "sweep: out of memory\n");
+            return 1;
+        }
+        swap_time(&fx);
+        swap_time(&dbl);
+        for (int f = 0; f < frames; f++) {
+            runner_frame(&fx);
+            runner_frame(&dbl);
+        }
+        swap_time(&fx);
+        swap_time(&dbl);
+        runner_positions(&fx, bf);
+        runner_positions(&dbl, bd);
+        back_f = largest_gap(n, bf, start_f);
+        back_d = largest_gap(n, bd, start_d);
+        free(bf), free(bd);
+    }
     {
         hw_params hp;
         char why[SCENE_ERR_LEN];
@@ -384,6 +448,11 @@ int main(int argc, char **argv)
         json_num("us_per_frame_dbl", 1e6 * tdbl / frames, 0);
         json_num("gravity_step_lsb", gh2 / lsb, 0);
         printf("\"finite\": %s, \"skipped_fx\": %ld, ", finite ? "true" : "false", runner_skipped(&fx));
+        if (reverse) {
+            json_num("back_fx", back_f / scale, 0);
+            json_num("back_fx_lsb", back_f / lsb, 0);
+            json_num("back_dbl", back_d / scale, 0);
+        }
         check_json("check_fx", check, &sc, &tf, frames);
         printf(", ");
         check_json("check_dbl", check, &sc, &td, frames);
@@ -391,6 +460,7 @@ int main(int argc, char **argv)
     }
     runner_free(&fx);
     runner_free(&dbl);
+    free(start_f), free(start_d);
     free(pf), free(pd), free(vf), free(vd), free(tf.a), free(td.a), free(tf.last), free(td.last);
     scene_free(&sc);
     return 0;
