@@ -234,6 +234,7 @@ docs-tables: $(STRAND)
 	@python3 scripts/doc_tables.py docs/architecture.md
 test-docs: $(STRAND)
 	@python3 scripts/doc_tables.py --check docs/architecture.md
+	@python3 tb/doc_claims.py $(STRAND)
 
 TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
