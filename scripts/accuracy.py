@@ -307,6 +307,20 @@ def get(r, field):
 
 # ---- the cycle formula: model/timing.c, through `strand info` ----
 
+def constants_of(p):
+    """strand check --strict on a point's scene: "exact within 1 %", or its first warning (without
+    the file:line), so that a row says when a constant it depends on rounds away or clips."""
+    path = os.path.join(ROOT, ADIR, "scenes", point_key(p) + ".scene")
+    os.makedirs(os.path.dirname(path), exist_ok=True)
+    with open(path, "w") as fh:
+        fh.write(derive(p))
+    r = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "check", path, "--strict"], capture_output=True, text=True)
+    if r.returncode == 0:
+        return "exact within 1 %"
+    warn = [ln.split("warning: ", 1)[1] for ln in r.stderr.splitlines() if "warning: " in ln]
+    return warn[0].split(":")[0] if warn else r.stderr.strip().splitlines()[-1]
+
+
 def cycles_of_scene(path):
     """Cycles per frame of a scene's build, as the one formula (model/timing.c) gives them."""
     p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"], capture_output=True, text=True)
@@ -777,10 +791,12 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     # targets
     A("## Targets for the default Q16.16 build")
     A("")
-    A("Each scene at its own settings (the scene file), Q16.16 with the full root and divider.")
+    A("Each scene at its own settings (the scene file), Q16.16 with the full root and divider. The last column is "
+      "`strand check --strict` on the point's scene: whether every constant the hardware uses (g h^2, ks h^2/m, "
+      "kd h/m, damping, rest lengths, ...) holds within 1 % in the format, or the first that does not.")
     A("")
-    A("| target | scene settings | bound | fixed point | double | met |")
-    A("|---|---|---|---|---|---|")
+    A("| target | scene settings | bound | fixed point | double | met | constants (`strand check --strict`) |")
+    A("|---|---|---|---|---|---|---|")
     for t in TARGETS:
         scene, field, bound_, what, unit = t[:5]
         kw = target_kw(t)
@@ -792,7 +808,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
         claims["targets"].append(dict(scene=scene, field=field, bound=bound_, value=v, met=met, **kw))
         extra = "".join(f", {k} = {v_}" for k, v_ in kw.items())
         A(f"| {what} | {r['substeps']} substeps x {r['iterations']} iterations, {r['rule']}{extra} | {g(bound_)} {unit} | "
-          f"{g(v, 4)} {unit} | {g(vd, 4)} {unit} | {'yes' if met else '**no**'} |")
+          f"{g(v, 4)} {unit} | {g(vd, 4)} {unit} | {'yes' if met else '**no**'} | {constants_of(r['point'])} |")
     A("")
     # analytic references
     A("## The analytic references")
@@ -1061,13 +1077,14 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
           f"the {g(bound)} % of span bound: **smallest** is the fewest cycles per frame within the bound, **most accurate** "
           "the least error, **balanced** the knee (least sum of normalised log cycles and log error).")
         A("")
-        A("| budget | settings | cycles/frame | catenary error (% span) | rest stretch | RMS vs double | generic cells (4x5) |")
-        A("|---|---|---|---|---|---|---|")
+        A("| budget | settings | cycles/frame | catenary error (% span) | rest stretch | RMS vs double | generic cells (4x5) | "
+          "constants (`strand check --strict`) |")
+        A("|---|---|---|---|---|---|---|---|")
         for name, key in (("smallest", "smallest"), ("balanced", "balanced"), ("most accurate", "accurate")):
             r = recs[key]
             cells = get(by.get((r["width"], r["frac"], r["sqrt_bits"], r["div_bits"]), {}), "generic.cells")
             A(f"| {name} | {settings(r)} | {g(r['cycles'])} | {g(cat_err(r))} | {g(r['stretch_final_fx'])} % | "
-              f"{g(r['err_rms'])} | {g(cells) if cells else 'not synthesised'} |")
+              f"{g(r['err_rms'])} | {g(cells) if cells else 'not synthesised'} | {constants_of(r['point'])} |")
             claims["recommended"][key] = dict(point=r["point"], cycles=r["cycles"], error=cat_err(r))
     else:
         A("No centred point meets the bound.")
