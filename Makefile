@@ -118,6 +118,7 @@ sim: bootstrap
 	@scripts/sim.sh $(SCENE) $(if $(WAVES),--waves)
 
 wave: bootstrap
+	@if [ -z "$$DISPLAY" ]; then echo "make wave: no display (DISPLAY is not set): GTKWave needs one; the trace alone: make sim SCENE=$(SCENE) WAVES=1" >&2; exit 1; fi
 	@$(MAKE) --no-print-directory -s sim WAVES=1
 	@if [ "$(SCENE)" = "sim/scenes/ref000_rope.scene" ]; then save=sim/strand.gtkw; else save=$(BUILD)/sim/$(basename $(notdir $(SCENE)))/strand.gtkw; fi; \
 	  echo "gtkwave $$save"; gtkwave --dump=$(BUILD)/sim/$(basename $(notdir $(SCENE)))/waves.fst --save=$$save

@@ -4,7 +4,7 @@
 # Builds strand_core with exactly the scene's parameters and effects (cached), runs
 # it cycle for cycle against the cycle model, and writes into build/sim/<scene>/:
 # positions.csv (every frame end), final.png (the last frame), and with --waves an
-# FST trace and a GTKWave save file for it.
+# FST trace and a GTKWave save file for it; a lockstep mismatch leaves mismatch.fst there.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=$1
@@ -16,10 +16,14 @@ out=$build/sim/$name
 mkdir -p "$out"
 echo "building strand_core for $scene (Verilator; cached once built)..."
 harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene")
-args=(--csv "$out/positions.csv" --png "$out/final.png")
+# the harness runs in $out, so that a lockstep mismatch leaves its trace (mismatch.fst) there
+harness=$(realpath "$harness")
+scene_abs=$(realpath "$scene")
+out_abs=$(realpath "$out")
+args=(--csv "$out_abs/positions.csv" --png "$out_abs/final.png")
 if [ "$waves" = "--waves" ]; then
   python3 scripts/gtkw.py "$scene" "$out/strand.gtkw" waves.fst
-  args+=(--trace "$out/waves.fst")
+  args+=(--trace "$out_abs/waves.fst")
 fi
-"$harness" "$scene" "${args[@]}"
+(cd "$out" && "$harness" "$scene_abs" "${args[@]}")
 echo "positions: $out/positions.csv   picture: $out/final.png${waves:+   trace: $out/waves.fst}"
