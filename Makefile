@@ -32,6 +32,8 @@ TOP_SRC   := $(sort $(wildcard rtl/*.v))
 RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 
 SCENE     ?= sim/scenes/ref000_rope.scene
+# SCENE=pendulum is short for sim/scenes/pendulum.scene (a name without a / or .scene)
+override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
 .PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
