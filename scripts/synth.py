@@ -72,10 +72,11 @@ MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every ta
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
-# on the 4x5 pipelined build takes most of an hour); 8x8_pipe and 8x128_pipe are not placed
-# (twice the 4x5's units and multipliers: two hours or more, longer than the whole flow
-# should take); 16x16_pipe is tried and does not fit (its multipliers).
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [1], "8x128_pipe": []}
+# on the 4x5 pipelined build takes most of an hour). Only the 4x5 goes through synth_ecp5 and
+# nextpnr: the others have twice its units or more (synth_ecp5 alone takes 10 to 25 minutes
+# each, place and route two hours or more), so they get generic cells only, and the report
+# gives the multipliers they would need from the 4x5's per unit.
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": []}
 # The larger serial builds are placed on the ECP5 with one seed too (a 16x16 run takes a
 # quarter of an hour); the 4x5, the build every figure is checked on, with all of SEEDS.
 SERIAL_SEEDS = {"8x8": [1], "16x16": [1]}
@@ -157,8 +158,8 @@ def flows_of(build):
     placed = BUILD_MAP[build][1]
     if placed == "ice40":  # a UP5K candidate: only what the UP5K needs
         return ["ice40", "ice40_place"]
-    if placed == "ecp5p":  # a pipelined build: its cells and the ECP5
-        return ["generic", "ecp5"] + (["ecp5_place"] if seeds_of(build) else [])
+    if placed == "ecp5p":  # a pipelined build: its cells, and the ECP5 if it is placed
+        return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) else [])
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
 
 
@@ -558,7 +559,8 @@ def report(bdir, gen, out):
     w("| build | what it changes | placed on |")
     w("|---|---|---|")
     for b, o, placed in BUILDS:
-        where = {"ecp5": "ECP5 LFE5U-85F, and tried on the UP5K", "ecp5p": "ECP5 LFE5U-85F", "ice40": "iCE40 UP5K"}[placed]
+        where = {"ecp5": "ECP5 LFE5U-85F, and tried on the UP5K", "ecp5p": "ECP5 LFE5U-85F" if seeds_of(b) else
+                 "generic cells only", "ice40": "iCE40 UP5K"}[placed]
         w(f"| {b} | {describe(b, gen)}{', ARCH=1 (pipelined)' if placed == 'ecp5p' else ''} | {where} |")
     w("")
 
@@ -623,17 +625,31 @@ def report(bdir, gen, out):
     # the pipelined builds
     w("## The pipelined builds (ARCH = 1) on the ECP5-85F")
     w("")
+    placed_pipe = [b for b in PIPE if seeds_of(b)]
+    per_unit = None
+    if placed_pipe:
+        b0 = placed_pipe[0]
+        per_unit = pick(res[b0]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / BUILD_MAP[b0][0]["M"]
     w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
-      "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical), then the ECP5 "
-      "as above. The ECP5-85F has 156 MULT18X18D: a unit's toward_pipe at W = 32 takes 16 (two squares and two "
-      "products of 32 x 32 bits), which bounds the units that fit. The 4x5 is placed with one seed (a run takes "
-      "most of an hour here); 8x8_pipe and 8x128_pipe are not placed (twice its units: two hours or more each), "
-      "so their fmax is not measured.")
+      "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical); the "
+      + (f"{', '.join(placed_pipe)} also through synth_ecp5 and nextpnr-ecp5 as above, one seed (a run takes most of "
+         "an hour here). " if placed_pipe else "")
+      + "The larger ones get generic cells only: synth_ecp5 alone takes 10 to 25 minutes each here, place and "
+      "route two hours or more. The ECP5-85F has 156 MULT18X18D, which bounds the units that fit"
+      + (f": the placed build's toward_pipes take {per_unit:g} a unit (two squares and two products of 32 x 32 bits), "
+         f"so at most {int(156 // per_unit)} units fit; the last column gives M x {per_unit:g} for each build."
+         if per_unit else "."))
     w("")
     w("| build | generic cells | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD "
-      "| fmax per seed, MHz | median |")
-    w("|---|--:|--:|--:|--:|--:|--:|--:|---|---|--:|")
+      "| fmax per seed, MHz | median | MULT18X18D needed (M x per unit) |")
+    w("|---|--:|--:|--:|--:|--:|--:|--:|---|---|--:|--:|")
     for b in PIPE:
+        mults = BUILD_MAP[b][0]["M"] * per_unit if per_unit else None
+        need = f"{mults:g}{'' if mults <= 156 else ' (over 156)'}" if mults else "-"
+        if not seeds_of(b):
+            w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | - | - | - | - | - | - | not synthesised for "
+              f"the ECP5 | not placed | - | {need} |")
+            continue
         k = res[b]["ecp5"]["counts"]
         if seeds_of(b):
             kp = res[b]["ecp5_place"]["counts"]
@@ -646,7 +662,7 @@ def report(bdir, gen, out):
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
           f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
-          f"| {placed} | {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+          f"| {placed} | {seeds} | {f'**{med:.1f}**' if med else '-'} | {need} |")
     w("")
 
     # ice40
