@@ -22,7 +22,7 @@ Flows on strand_core: generic (`synth`, hierarchy kept: the headline; and `synth
 -flatten`), iCE40, ECP5 and Xilinx 7-series cell counts. Place and route runs on
 tb/pnr_wrap.v (the core behind the AXI4-Lite shell strand_axil, its bus behind shift
 registers so that any pin count fits): nextpnr-ecp5 (the project's .venv, from PyPI) on
-an LFE5U-85F, nextpnr-ice40 (Debian) on an iCE40 UP5K, each with several seeds; fmax is
+an LFE5U-85F, nextpnr-ice40 (Debian) on an iCE40 UP5K, each with the seeds SEEDS lists; fmax is
 nextpnr's post-route figure for the clock.
 
 Each build keeps its raw files in DIR/<build>/: <flow>.ys, <flow>.log, <flow>.stat.json,

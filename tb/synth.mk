@@ -8,7 +8,7 @@
 # candidates) through generic `synth` (hierarchical and flattened), synth_ice40 -dsp,
 # synth_ecp5 and synth_xilinx, then place and route of the core with its AXI4-Lite shell
 # (tb/pnr_wrap.v) with nextpnr-ecp5 (LFE5U-85F, from the project's .venv) and
-# nextpnr-ice40 (UP5K), several seeds each, SYNTH_JOBS at a time; then docs/resources.md
+# nextpnr-ice40 (UP5K), the seeds synth.py lists, SYNTH_JOBS at a time; then docs/resources.md
 # is rewritten from the results. Raw logs and netlists stay in $(BUILD)/synth/<build>/;
 # a step whose inputs are unchanged (by content) is not run again. A latch or a failed
 # `check -assert` fails the target; a build that does not fit a device does not.
