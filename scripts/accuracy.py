@@ -901,11 +901,12 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
                    key=lambda r: r["substeps"])
     if prows:
         A("  With `projection = previous` (SHAKE: each correction along the constraint's direction at the start of "
-          "the substep, docs/model.md; the C model runs it, the RTL does not build it yet) the same pendulum keeps its "
+          "the substep, docs/model.md; the C model runs it, the RTL does not build it yet) the method no longer loses "
           "energy: over the run the drift is "
-          + ", ".join(f"{g(get(r, 'check_fx.error_pct'))} % (double {g(get(r, 'check_dbl.error_pct'))} %) at "
-                      f"{r['substeps']} substeps" for r in prows)
-          + " in Q16.16, where projection along the current direction loses nearly all of it.")
+          + ", ".join(f"{g(get(r, 'check_fx.error_pct'))} % in Q16.16 and {g(get(r, 'check_dbl.error_pct'))} % in "
+                      f"double at {r['substeps']} substeps" for r in prows)
+          + ", where projection along the current direction loses nearly all of it. What remains in fixed point is "
+          f"rounding: the double runs hold the energy within {g(max(abs(get(r, 'check_dbl.error_pct')) for r in prows))} %.")
         A("")
     backs = [(name, one(results, "energy", reverse=True, **kw)) for name, kw in
              (("current", {}), ("previous", {"projection": "previous"}))]
