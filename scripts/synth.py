@@ -366,15 +366,39 @@ def run_pnr(build, family, seed, bdir):
     stamp = os.path.join(d, f"pnr_{family}_s{seed}.ok")
     if stamp_fresh(stamp, key):
         return "cached"
-    if os.path.exists(stamp):
-        os.remove(stamp)
-    log = os.path.join(d, f"pnr_{family}_s{seed}.log")
-    rc, secs, cpu = run_tool(pnr_cmd(family, seed), d, log)
-    outcome = pnr_outcome(open(log).read(), rc)
-    if outcome["fits"] is None:
-        raise Failure(f"{build} nextpnr-{family} seed {seed}: {outcome['error']} (log: {log})")
-    write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
-    return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit")
+    # Another run (a second make synth, or `synth.py pnr`) placing the same netlist holds the
+    # lock: wait for it and take its result rather than clobber its files.
+    lock = stamp + ".lock"
+    while True:
+        try:
+            fd = os.open(lock, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
+            os.write(fd, str(os.getpid()).encode())
+            os.close(fd)
+            break
+        except FileExistsError:
+            try:
+                os.kill(int(open(lock).read() or 0), 0)
+            except (ValueError, ProcessLookupError, FileNotFoundError):
+                if os.path.exists(lock):
+                    os.remove(lock)  # its run is gone
+                continue
+            time.sleep(10)
+            if stamp_fresh(stamp, key):
+                return "cached (placed by another run)"
+    try:
+        if stamp_fresh(stamp, key):
+            return "cached"
+        if os.path.exists(stamp):
+            os.remove(stamp)
+        log = os.path.join(d, f"pnr_{family}_s{seed}.log")
+        rc, secs, cpu = run_tool(pnr_cmd(family, seed), d, log)
+        outcome = pnr_outcome(open(log).read(), rc)
+        if outcome["fits"] is None:
+            raise Failure(f"{build} nextpnr-{family} seed {seed}: {outcome['error']} (log: {log})")
+        write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
+        return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit")
+    finally:
+        os.remove(lock)
 
 
 # ---- reading the results ----
@@ -895,8 +919,21 @@ def main():
     s.add_argument("--build", default="build/synth")
     s.add_argument("--gen", default="build/gen")
     s.add_argument("--out", default="docs/resources.md")
+    s = sub.add_parser("pnr", help="place and route one build whose place flow is done (a make synth run "
+                                   "beside it waits for the result instead of placing it again)")
+    s.add_argument("name")
+    s.add_argument("--family", default="ecp5", choices=("ecp5", "ice40"))
+    s.add_argument("--seed", type=int, default=SEEDS[0])
+    s.add_argument("--build", default="build/synth")
     a = p.parse_args()
     try:
+        if a.cmd == "pnr":
+            if a.name not in BUILD_MAP:
+                raise Failure(f"no build named {a.name} (the builds: {', '.join(BUILD_MAP)})")
+            if not os.path.exists(os.path.join(a.build, a.name, f"{a.family}_place.ok")):
+                raise Failure(f"{a.name}: its {a.family}_place flow has not run (make synth runs it)")
+            print(f"synth {a.name} pnr {a.family} s{a.seed}: {run_pnr(a.name, a.family, a.seed, a.build)}")
+            return 0
         if a.cmd == "report":
             total, met = report(a.build, a.gen, a.out)
             print(f"wrote {a.out}")
