@@ -77,9 +77,10 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # each, place and route two hours or more), so they get generic cells only, and the report
 # gives the multipliers they would need from the 4x5's per unit.
 PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": []}
-# Seeds of the other builds (one: a run of the 16x16 takes a quarter of an hour here, and the
-# whole flow should end within the hour or two of the pipelined build's place and route).
-SERIAL_SEEDS = {}
+# Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
+# pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
+# router was still resolving some 124,000 overused wires after 25 minutes of routing here.
+SERIAL_SEEDS = {"16x16": []}
 
 
 def seeds_of(build):
@@ -512,7 +513,8 @@ def load_flow(bdir, build, flow):
 
 def load_pnr(bdir, build, family):
     out = []
-    for s in seeds_of(build):
+    # the ECP5 seeds are per build; every build is tried on the UP5K with SEEDS
+    for s in (seeds_of(build) if family == "ecp5" else SEEDS):
         p = os.path.join(bdir, build, f"pnr_{family}_s{s}.ok")
         if os.path.exists(p):
             with open(p) as f:
@@ -558,9 +560,10 @@ def report(bdir, gen, out):
     res = {b: {f: load_flow(bdir, b, f) for f in flows_of(b)} for b, _, _ in BUILDS}
     pnr = {b: {} for b, _, _ in BUILDS}
     for b, _, placed in BUILDS:
-        if placed == "ecp5" or (placed == "ecp5p" and seeds_of(b)):
+        if placed in ("ecp5", "ecp5p") and seeds_of(b):
             pnr[b]["ecp5"] = load_pnr(bdir, b, "ecp5")
-        pnr[b]["ice40"] = load_pnr(bdir, b, "ice40")
+        if placed != "ecp5p":  # the pipelined builds are not tried on the UP5K
+            pnr[b]["ice40"] = load_pnr(bdir, b, "ice40")
     yver = sorted({r[f]["tool"] for r in res.values() for f in r if r[f]["tool"]})
     pver = sorted({nextpnr_short(x.get("tool"), fam) for b in pnr for fam, runs in pnr[b].items() for x in runs})
     d = table_defaults(gen)
@@ -583,7 +586,8 @@ def report(bdir, gen, out):
     w("| build | what it changes | placed on |")
     w("|---|---|---|")
     for b, o, placed in BUILDS:
-        where = {"ecp5": "ECP5 LFE5U-85F, and tried on the UP5K", "ecp5p": "ECP5 LFE5U-85F" if seeds_of(b) else
+        where = {"ecp5": ("ECP5 LFE5U-85F" if seeds_of(b) else "ECP5 LFE5U-85F cells (not placed)")
+                 + ", and tried on the UP5K", "ecp5p": "ECP5 LFE5U-85F" if seeds_of(b) else
                  "generic cells only", "ice40": "iCE40 UP5K"}[placed]
         w(f"| {b} | {describe(b, gen)}{', ARCH=1 (pipelined)' if placed == 'ecp5p' else ''} | {where} |")
     w("")
@@ -627,8 +631,8 @@ def report(bdir, gen, out):
     w(f"Cells of strand_core (`synth_ecp5`); then place and route of the core with its AXI4-Lite shell "
       f"(strand_axil) behind tb/pnr_wrap.v (its bus behind shift registers, 5 pins: every path "
       f"register to register), nextpnr-ecp5 `{' '.join(ECP5_ARGS)}`, seed(s) {', '.join(map(str, SEEDS))}"
-      + (f" ({'; '.join(b + ': ' + ', '.join(map(str, v)) for b, v in SERIAL_SEEDS.items())})" if SERIAL_SEEDS else "")
-      + " (a run of the 16x16 takes a quarter of an hour here). "
+      + (f" ({'; '.join(b + ': ' + (', '.join(map(str, v)) or 'not placed') for b, v in SERIAL_SEEDS.items())})"
+         if SERIAL_SEEDS else "") + ". "
       f"fmax is nextpnr's post-route figure for `clk` (the goal is 100 MHz); DPR16X4 is LUT RAM "
       f"(16 words x 4 bits), DP16KD block RAM.")
     w("")
@@ -637,7 +641,8 @@ def report(bdir, gen, out):
     for b in MAIN:
         k = res[b]["ecp5"]["counts"]
         kp = res[b]["ecp5_place"]["counts"]
-        seeds, med = fmax_cells(pnr[b]["ecp5"])
+        seeds, med = fmax_cells(pnr[b]["ecp5"]) if seeds_of(b) else ("not placed (routing does not finish in this "
+                                                                       "flow's time)", None)
         w(f"| {b} | {fmt(pick(k, lambda t: t == 'LUT4'))} | {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
           f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
