@@ -63,7 +63,7 @@ help:
 	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model; docs/soak.md"
 	@echo "  make stability   regenerate docs/stability.md and docs/img/stability_euler_verlet.png"
 	@echo "  make synth       Yosys (generic, iCE40 + nextpnr, ECP5, Xilinx) for the 4x5, 8x8, 16x16 builds, their"
-	@echo "                   pipelined versions and 8x128 pipelined on the ECP5 -> docs/resources.md (hours)"
+	@echo "                   pipelined versions (cells; the 4x5 also on the ECP5) -> docs/resources.md (hours)"
 	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"
 	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
 	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
