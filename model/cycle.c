@@ -50,6 +50,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->mouse = c->hp.grab ? MOUSE_GRAB : MOUSE_IMPULSE;
     sc->en_constraints = hp->en_constraints;
     sc->rule = hp->rule ? RULE_PAIRWISE : RULE_CENTRED;
+    sc->projection = hp->projection ? PROJECTION_PREVIOUS : PROJECTION_CURRENT;
     sc->en_springs = hp->en_springs;
     sc->en_ground = hp->en_ground;
     sc->ground_axis = hp->ground_axis;

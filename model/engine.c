@@ -49,6 +49,7 @@ void runner_velocities(const runner *r, double (*out)[3])
 }
 
 long runner_skipped(const runner *r) { return r->kind == NUMBER_FIXED ? r->fx.skipped : r->dbl.skipped; }
+long runner_fallbacks(const runner *r) { return r->kind == NUMBER_FIXED ? r->fx.fallbacks : r->dbl.fallbacks; }
 
 static double dist3(const double *a, const double *b)
 {
@@ -166,6 +167,7 @@ bool run_scene(const scene *sc, number_kind kind, const fx_format *fmt, int fram
         st->drift_pct = scale > 0 ? 100.0 * st->drift / scale : 0;
     }
     st->skipped = runner_skipped(&r);
+    st->fallbacks = runner_fallbacks(&r);
     runner_free(&r);
     free(pos);
     free(vel);

@@ -28,6 +28,8 @@ void runner_frame(runner *r);
 void runner_positions(const runner *r, double (*out)[3]);
 void runner_velocities(const runner *r, double (*out)[3]);
 long runner_skipped(const runner *r);
+/* projection = previous: corrections made along the current direction instead */
+long runner_fallbacks(const runner *r);
 
 /* Largest |l - rest| / rest over the constraint and spring edges, in percent (0 without edges). */
 double stats_max_stretch(const scene *sc, double (*pos)[3]);
@@ -49,6 +51,7 @@ typedef struct {
     bool finite;          /* no NaN or infinity appeared */
     int first_nonfinite;  /* frame where one first appeared (0: none) */
     long skipped;
+    long fallbacks;
 } run_stats;
 
 /* Callback after each frame (frame = frames completed, 1-based); return false to stop. */

@@ -19,8 +19,8 @@ static const char *reject(const scene *sc, const char *section, char *err, size_
 const char *hw_check(const scene *sc, char *err, size_t len)
 {
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
-    if (sc->en_constraints && sc->projection == PROJECTION_PREVIOUS)
-        return reject(sc, "constraints", err, len, "projection = previous (the C model runs it)");
+    if (sc->en_constraints && sc->projection == PROJECTION_PREVIOUS && sc->body == BODY_CHAIN && sc->order == ORDER_REDBLACK)
+        return reject(sc, "constraints", err, len, "projection = previous in the pipelined pass (order = redblack); order = serial runs it");
     hw_params hp;
     hw_params_of(sc, &hp);
     char why[256];
@@ -87,6 +87,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
     /* red/black: a chain's constraints stream through the pipelined pass; a graph's edges,
        already in colour order (scene_set_order), take the serial pass */
     hp->arch = hp->en_constraints && !hp->graph && sc->order == ORDER_REDBLACK;
+    hp->projection = hp->en_constraints && sc->projection == PROJECTION_PREVIOUS;
     hp->en_springs = sc->en_springs && (!hp->graph || hp->e_springs > 0);
     if (hp->e_rods < 1) hp->e_rods = 1; /* the memories' sizes: at least one entry (unused in a chain) */
     if (hp->e_springs < 1) hp->e_springs = 1;

@@ -494,6 +494,9 @@ static int cmd_run(int argc, char **argv)
     if (!st.finite)
         printf("warning: values became non-finite at frame %d: the integration diverged\n", st.first_nonfinite);
     if (st.skipped) printf("corrections skipped for zero lengths: %ld\n", st.skipped);
+    if (st.fallbacks)
+        printf("projection = previous: corrections along the current direction (no start direction, or its line misses the sphere): %ld\n",
+               st.fallbacks);
     scene_free(&sc);
     return ok ? 0 : 1;
 }

@@ -5,6 +5,10 @@
 
 long hw_toward_latency(const hw_params *hp)
 {
+    if (hp->projection) /* toward_prev.v: the root of r.r, DIM unit divides, three phases of DIM products
+                           (each used 3 cycles after its issue), p.p and rest^2, the leg's root, the last
+                           phase, T formed, done */
+        return 2L * hp->sqrt_bits + (long)hp->dim * hp->div_bits + 7L * hp->dim + 20;
     /* toward.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline), the
        root (SQRT_BITS + 2), the divide (DIV_BITS + 2), DIM products issued, the last used 3
        cycles later (rounded in between), done */
@@ -74,13 +78,15 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
     if (hp->arch)
         snprintf(pipe, sizeof pipe, "toward_pipe latency LP = SQRT_BITS + DIV_BITS + 15 = %ld\n", hw_toward_pipe_latency(hp));
     return snprintf(out, (size_t)len,
-                    "toward latency LT = SQRT_BITS + DIV_BITS + 2 DIM + 10 = %ld\n"
+                    "%s latency LT = %s = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
                     "%s"
                     "constraint pass = %s = %ld\n"
                     "spring pass = 1 + links (LS + 5) = %ld\n"
                     "substep = Verlet (K + 5 with constraints, else K + 4) + ITER passes [+ spring pass] [+ ground K + 4] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
+                    hp->projection ? "toward_prev" : "toward",
+                    hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     hp->arch ? "2 sweeps (K + LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp),

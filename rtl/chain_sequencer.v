@@ -15,9 +15,13 @@
  * zero length; a pinned C is not written (model/engine_body.h centred_node()).
  * FEC = (counter == N). The pass repeats ITER times.
  *
+ * With PROJECTION = 1 (projection = previous) the datapath is toward_prev, which also
+ * takes the previous positions of both nodes (read with their positions, held in the
+ * window beside them) and moves C along the direction the two had at the substep's start.
+ *
  * Every node takes the same number of cycles, pinned, end or zero length alike,
  * so a pass takes 2 + N * (2 * LT + 2) cycles after the start cycle, LT being
- * toward's latency (docs/architecture.md derives it).
+ * the datapath's latency (docs/architecture.md derives it).
  *
  * Storage is read through the units' synchronous port A: rd_* address this cycle,
  * data (rd_pos, rd_pinned) next cycle. Positions are DIM lanes (lane k at bits
@@ -36,6 +40,7 @@ module chain_sequencer #(
     output reg  [IW-1:0] rd_nidx,
     input  wire [DIM*W-1:0] rd_pos,  // its data, the next cycle
     input  wire          rd_pinned,
+    input  wire [DIM*W-1:0] rd_prev, // and its previous position (PROJECTION)
 
     output reg           wr_en,      // write C
     output wire [UW-1:0] wr_uidx,
@@ -87,6 +92,7 @@ module chain_sequencer #(
     reg [2:0]     state_q, state_d;
     reg [ITW-1:0] iter_q;
     reg [DIM*W-1:0] u_pos, c_pos, d_pos;    // the window U, C, D
+    reg [DIM*W-1:0] u_prev, c_prev, d_prev; //   their previous positions (PROJECTION)
     reg           c_pin, d_pin, has_u, has_d;
     reg [DIM*W-1:0] up_pos;                 // the point from U
     reg           up_ok;
@@ -104,10 +110,20 @@ module chain_sequencer #(
     wire             from_u  = state_q == S_UP;
     /* verilator lint_off PINCONNECTEMPTY */
     // busy is not needed: the FSM waits for done
-    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
-        .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
-        .p(from_u ? u_pos : d_pos), .c(c_pos), .rest_len(rest_len),
-        .busy(), .done(t_done), .t(t_pos), .valid(t_valid));
+    generate
+        if (PROJECTION) begin : g_previous
+            toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+                .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
+                .p(from_u ? u_pos : d_pos), .c(c_pos), .pp(from_u ? u_prev : d_prev), .pc(c_prev),
+                .rest_len(rest_len), .busy(), .done(t_done), .t(t_pos), .valid(t_valid));
+        end else begin : g_current
+            toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+                .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
+                .p(from_u ? u_pos : d_pos), .c(c_pos), .rest_len(rest_len),
+                .busy(), .done(t_done), .t(t_pos), .valid(t_valid));
+            wire unused_prev = &{1'b0, u_prev, c_prev, d_prev};
+        end
+    endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
 
     // The new C, valid in S_DN_W when t_done (the point from D is t_pos).
@@ -183,11 +199,13 @@ module chain_sequencer #(
         case (state_q)
             S_LOAD_C: begin
                 c_pos <= rd_pos;
+                c_prev <= rd_prev;
                 c_pin <= rd_pinned;
                 has_u <= 1'b0;
             end
             S_LOAD_D: begin
                 d_pos   <= rd_pos;
+                d_prev  <= rd_prev;
                 d_pin   <= rd_pinned;
                 has_d   <= N > 1;
                 ahead   <= TWO;
@@ -201,11 +219,14 @@ module chain_sequencer #(
             S_DN_W: if (t_done && moved) c_pos <= new_pos;  // a pinned C stays where it is, in the window too
             S_NEXT: begin
                 u_pos <= c_pos;
+                u_prev <= c_prev;
                 has_u <= 1'b1;
                 c_pos <= d_pos;
+                c_prev <= d_prev;
                 c_pin <= d_pin;
                 has_d <= ahead < N_COUNT;
                 d_pos <= rd_pos;
+                d_prev <= rd_prev;
                 d_pin <= rd_pinned;
                 ahead <= ahead + 1'b1;
                 {ahead_u, ahead_n} <= next_node({ahead_u, ahead_n});

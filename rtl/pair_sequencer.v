@@ -189,10 +189,18 @@ module pair_sequencer #(
             wire             both_free = !a_pin && !b_pin;
             /* verilator lint_off PINCONNECTEMPTY */
             // busy is not needed: the FSM waits for done
-            toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
-                .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
-                .p(a_pos), .c(rd_pos), .rest_len(link_rest),  // b arrives as toward starts
-                .busy(), .done(t_done), .t(excess), .valid(t_valid));
+            if (PROJECTION) begin : g_previous
+                // projection = previous: the excess along the direction at the substep's start
+                toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+                    .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
+                    .p(a_pos), .c(rd_pos), .pp(a_prev), .pc(rd_prev), .rest_len(link_rest),  // b arrives as it starts
+                    .busy(), .done(t_done), .t(excess), .valid(t_valid));
+            end else begin : g_current
+                toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+                    .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
+                    .p(a_pos), .c(rd_pos), .rest_len(link_rest),  // b arrives as toward starts
+                    .busy(), .done(t_done), .t(excess), .valid(t_valid));
+            end
             for (k = 0; k < DIM; k = k + 1) begin : g_lane
                 wire [W-1:0] e = excess[k*W +: W];
                 wire [W-1:0] h;   // e / 2
