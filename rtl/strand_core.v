@@ -168,7 +168,7 @@ module strand_core #(
             ) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
                 .rd_uidx(c_rd[AW-1:IW]), .rd_nidx(c_rd[IW-1:0]), .rd_pos(seq_rd_pos), .rd_pinned(seq_rd_pin),
-                .rd_prev(seq_rd_prev),
+                .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}),  // (a kept port would keep its mux)
                 .wr_en(c_wr_en), .wr_uidx(c_wr[AW-1:IW]), .wr_nidx(c_wr[IW-1:0]), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
         end else if (EN_CONSTRAINTS) begin : g_pairwise
@@ -179,7 +179,7 @@ module strand_core #(
                 .e_we(edge_we && !edge_spring), .e_a(edge_a), .e_b(edge_b), .e_rest(edge_rest),
                 .ks({W{1'b0}}), .kd({W{1'b0}}),
                 .rd_uidx(c_rd[AW-1:IW]), .rd_nidx(c_rd[IW-1:0]), .rd_pos(seq_rd_pos), .rd_pinned(seq_rd_pin),
-                .rd_prev(seq_rd_prev), .rd_acc({DW{1'b0}}),
+                .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}), .rd_acc({DW{1'b0}}),  // previous positions: PROJECTION only
                 .wr_en(c_wr_en), .wr_uidx(c_wr[AW-1:IW]), .wr_nidx(c_wr[IW-1:0]), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
         end else begin : g_no_constraints
