@@ -88,6 +88,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
         if (!c->st_pend || !c->st_pos) return false;
     }
     c->ls = (int)hw_spring_latency(hp);
+    c->lsp = (int)hw_spring_pipe_latency(hp);
     return true;
 }
 
@@ -119,9 +120,14 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
     const int fec_at = c->hp.graph ? c->hp.e_rods : m * c->hp.k - (c->hp.rule ? 1 : 0);
     o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == fec_at;
-    if (c->hp.arch) o->fec = c->st_counter == c->hp.k + 1; /* chain_stream: every slot of the sweep issued */
+    if (c->hp.arch && c->hp.en_constraints) o->fec = c->st_counter == c->hp.k + 1; /* chain_stream: every slot issued */
     /* strand_core shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
-    if (c->phase == PH_FORCE) {
+    if (c->phase == PH_FORCE && c->hp.arch) { /* spring_stream: 0, port A's address, the slots issued */
+        int k = c->hp.k, t = c->sp_t;
+        o->uidx = 0;
+        o->nidx = !c->sp_running || t > k ? 0u : t == 0 ? (uint32_t)(k - 1) : (uint32_t)(t - 1);
+        o->counter = (uint32_t)c->sp_counter;
+    } else if (c->phase == PH_FORCE) {
         o->uidx = (uint32_t)c->force.uidx;
         o->nidx = (uint32_t)c->force.nidx;
         o->counter = (uint32_t)c->force.counter;
@@ -198,6 +204,8 @@ static void reset_all(cyc_model *c)
         c->wb_x[u] = c->wb_y[u] = c->wb_z[u] = 0;
     }
     c->st_running = c->st_done = false;
+    c->sp_running = c->sp_done = false;
+    c->sp_t = c->sp_counter = 0;
     c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
     if (c->st_pend) memset(c->st_pend, 0, (size_t)n * sizeof *c->st_pend);
     c->sq_state = SQ_IDLE;
@@ -399,7 +407,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
     const bool verlet_end = c->phase == PH_VERLET && c->done;
     const bool seq_done = hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
-    const bool force_done = c->force.done;
+    const bool force_done = hp->arch ? c->sp_done : c->force.done;
     const bool body_end = hp->en_constraints ? c->phase == PH_CONSTRAIN && seq_done : verlet_end;
     const bool ground_start = body_end && hp->en_ground;
     const bool substep_end = hp->en_ground ? c->phase == PH_GROUND && c->done : body_end;
@@ -481,7 +489,26 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
     if (!hp->arch && hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
-    if (hp->en_springs) pair_seq_edge(c, &c->force, force_start, true, written);
+    if (hp->en_springs && !hp->arch) pair_seq_edge(c, &c->force, force_start, true, written);
+    /* spring_stream: the forces of the pass, gathered in link order as it starts; then its control */
+    if (hp->en_springs && hp->arch) {
+        const int sweep = (int)hw_spring_sweep(hp);
+        const bool slot = c->sp_running && c->sp_t >= 2 && c->sp_t <= k + 2;
+        const bool sweep_end = c->sp_running && c->sp_t == sweep - 1;
+        if (c->sp_running && c->sp_t == 0)
+            for (int i = 0; i + 1 < n; i++) sim_fx_spring_edge(&c->s, c->spring0 + i);
+        c->sp_done = sweep_end;
+        if (force_start && !c->sp_running) {
+            c->sp_running = true;
+            c->sp_t = c->sp_counter = 0;
+        } else if (sweep_end) {
+            c->sp_running = false;
+            c->sp_t = c->sp_counter = 0;
+        } else if (c->sp_running) {
+            c->sp_t++;
+            if (slot) c->sp_counter++;
+        }
+    }
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
     /* chain_stream control: sweeps of S cycles, colour 0 then 1, ITER times. */

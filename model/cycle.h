@@ -109,6 +109,11 @@ typedef struct {
     int st_t, st_colour, st_iter, st_counter;
     bool *st_pend;      /* per node: written in this sweep */
     fx_t (*st_pos)[3];  /* its new position */
+    /* spring_stream (ARCH = 1 with EN_SPRINGS): one sweep; every force of the pass is
+       gathered when it starts (nothing reads a force until the Verlet pass after it) */
+    int lsp;     /* spring_force_pipe's latency */
+    bool sp_running, sp_done;
+    int sp_t, sp_counter;
     cyc_pair_seq pair;   /* pair_sequencer, the constraints (rule 1) */
     cyc_pair_seq force;  /* pair_sequencer, the spring pass (EN_SPRINGS) */
 } cyc_model;

@@ -111,6 +111,12 @@ double stats_energy(const scene *sc, double (*pos)[3], double (*vel)[3], double 
     return ke + pe;
 }
 
+double stats_drift_pct(double energy0, double energy, double ke_max)
+{
+    double scale = fabs(energy0) > ke_max ? fabs(energy0) : ke_max;
+    return scale > 0 ? 100.0 * (energy - energy0) / scale : 0;
+}
+
 double stats_length_scale(const scene *sc)
 {
     double sum = 0;
@@ -162,10 +168,7 @@ bool run_scene(const scene *sc, number_kind kind, const fx_format *fmt, int fram
         }
     }
     st->drift = st->energy - st->energy0;
-    {
-        double scale = fabs(st->energy0) > st->ke_max ? fabs(st->energy0) : st->ke_max;
-        st->drift_pct = scale > 0 ? 100.0 * st->drift / scale : 0;
-    }
+    st->drift_pct = stats_drift_pct(st->energy0, st->energy, st->ke_max);
     st->skipped = runner_skipped(&r);
     st->fallbacks = runner_fallbacks(&r);
     runner_free(&r);

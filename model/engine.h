@@ -39,6 +39,9 @@ double stats_energy(const scene *sc, double (*pos)[3], double (*vel)[3], double 
 double stats_lowest(const scene *sc, double (*pos)[3]);
 /* A length scale for errors: the mean rest length of the edges, else the chain spacing, else 1. */
 double stats_length_scale(const scene *sc);
+/* An energy change as % of the larger of the starting energy and the largest kinetic energy
+   (a body that starts at rest at its lowest has energy 0: its swing sets the scale). */
+double stats_drift_pct(double energy0, double energy, double ke_max);
 
 typedef struct {
     int frames;

@@ -84,11 +84,12 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->grab = sc->en_mouse && sc->mouse == MOUSE_GRAB;
     hp->en_constraints = sc->en_constraints && (!hp->graph || hp->e_rods > 0);
     hp->rule = sc->rule == RULE_PAIRWISE ? 1 : 0;
-    /* red/black: a chain's constraints stream through the pipelined pass; a graph's edges,
-       already in colour order (scene_set_order), take the serial pass */
-    hp->arch = hp->en_constraints && !hp->graph && sc->order == ORDER_REDBLACK;
     hp->projection = hp->en_constraints && sc->projection == PROJECTION_PREVIOUS;
     hp->en_springs = sc->en_springs && (!hp->graph || hp->e_springs > 0);
+    /* red/black: a chain's constraints stream through the pipelined pass, and so do its springs
+       (their gathering keeps the link order); a graph's edges, already in colour order
+       (scene_set_order), take the serial passes */
+    hp->arch = (hp->en_constraints || hp->en_springs) && !hp->graph && sc->order == ORDER_REDBLACK;
     if (hp->e_rods < 1) hp->e_rods = 1; /* the memories' sizes: at least one entry (unused in a chain) */
     if (hp->e_springs < 1) hp->e_springs = 1;
     hp->en_ground = sc->en_ground;

@@ -369,6 +369,13 @@ int main(int argc, char **argv)
     }
     runner_positions(&fx, start_f);
     runner_positions(&dbl, start_d);
+    /* energy (engine.c stats_energy, as strand run reports it): its change over the run as % of
+       the larger of the starting energy and the largest kinetic energy */
+    double ref_f = stats_lowest(&sc, start_f), ref_d = stats_lowest(&sc, start_d), ke, ke_f, ke_d, e0_f, e0_d, e_f, e_d;
+    runner_velocities(&fx, vf);
+    runner_velocities(&dbl, vd);
+    e0_f = e_f = stats_energy(&sc, start_f, vf, ref_f, &ke_f);
+    e0_d = e_d = stats_energy(&sc, start_d, vd, ref_d, &ke_d);
     for (int f = 0; f < frames; f++) {
         double t0 = now();
         runner_frame(&fx);
@@ -393,6 +400,12 @@ int main(int argc, char **argv)
         if (!isfinite(sfin_f) || !isfinite(sfin_d)) finite = 0;
         tf.a[f] = signal(check, &sc, pf);
         td.a[f] = signal(check, &sc, pd);
+        runner_velocities(&fx, vf);
+        runner_velocities(&dbl, vd);
+        e_f = stats_energy(&sc, pf, vf, ref_f, &ke);
+        if (ke > ke_f) ke_f = ke;
+        e_d = stats_energy(&sc, pd, vd, ref_d, &ke);
+        if (ke > ke_d) ke_d = ke;
     }
     memcpy(tf.last, pf, sizeof(double[3]) * (size_t)n);
     memcpy(td.last, pd, sizeof(double[3]) * (size_t)n);
@@ -447,7 +460,10 @@ int main(int argc, char **argv)
         json_num("us_per_frame_fx", 1e6 * tfx / frames, 0);
         json_num("us_per_frame_dbl", 1e6 * tdbl / frames, 0);
         json_num("gravity_step_lsb", gh2 / lsb, 0);
-        printf("\"finite\": %s, \"skipped_fx\": %ld, ", finite ? "true" : "false", runner_skipped(&fx));
+        json_num("drift_pct_fx", stats_drift_pct(e0_f, e_f, ke_f), 0);
+        json_num("drift_pct_dbl", stats_drift_pct(e0_d, e_d, ke_d), 0);
+        printf("\"finite\": %s, \"skipped_fx\": %ld, \"fallbacks_fx\": %ld, ", finite ? "true" : "false", runner_skipped(&fx),
+               runner_fallbacks(&fx));
         if (reverse) {
             json_num("back_fx", back_f / scale, 0);
             json_num("back_fx_lsb", back_f / lsb, 0);

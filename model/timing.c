@@ -22,6 +22,21 @@ long hw_toward_pipe_latency(const hw_params *hp)
     return hp->sqrt_bits + hp->div_bits + 15L;
 }
 
+long hw_spring_pipe_latency(const hw_params *hp)
+{
+    /* spring_force_pipe.v: d, v_a, v_b; dv and |d|; the squares (two stages), their sum, the root
+       (SQRT_BITS + 3), the DIM divides side by side (DIV_BITS + 3), u signed, the vn products (two
+       stages) and their rounding, vn summed (two stages), ks (len - rest) and kd vn (two stages),
+       their sum, f rounded, the forces (two stages), their rounding into the output register */
+    return hp->sqrt_bits + hp->div_bits + 24L;
+}
+
+long hw_spring_sweep(const hw_params *hp)
+{
+    /* spring_stream.v: as a chain_stream sweep, with spring_force_pipe's latency */
+    return hp->k + hw_spring_pipe_latency(hp) + 4;
+}
+
 long hw_spring_latency(const hw_params *hp)
 {
     /* spring_force.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline),
@@ -54,6 +69,8 @@ long hw_constraint_pass(const hw_params *hp)
 long hw_spring_pass(const hw_params *hp)
 {
     long springs = hp->graph ? hp->e_springs : node_count(hp) - 1;
+    if (hp->arch) /* spring_stream: one sweep */
+        return hw_spring_sweep(hp);
     return 1 + springs * (hw_spring_latency(hp) + 5); /* pair_sequencer SPRING: as pairwise, per link */
 }
 
@@ -82,7 +99,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
                     "%s"
                     "constraint pass = %s = %ld\n"
-                    "spring pass = 1 + links (LS + 5) = %ld\n"
+                    "spring pass = %s = %ld\n"
                     "substep = Verlet (K + 5 with constraints, else K + 4) + ITER passes [+ spring pass] [+ ground K + 4] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
@@ -90,6 +107,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     hp->arch ? "2 sweeps (K + LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp),
+                    hp->arch ? "one sweep K + LSP + 4, LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
                     hw_spring_pass(hp), verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

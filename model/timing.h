@@ -16,6 +16,9 @@ long hw_toward_latency(const hw_params *hp);
 long hw_toward_pipe_latency(const hw_params *hp);
 /* spring_force.v: start to done. */
 long hw_spring_latency(const hw_params *hp);
+/* spring_force_pipe.v's latency and a spring_stream.v sweep (ARCH = 1 with EN_SPRINGS) */
+long hw_spring_pipe_latency(const hw_params *hp);
+long hw_spring_sweep(const hw_params *hp);
 /* chain_stream.v (ARCH = 1): one sweep (one colour of a pass), its first read to the next sweep's. */
 long hw_stream_sweep(const hw_params *hp);
 /* One constraint pass (chain_sequencer, pair_sequencer or chain_stream), start to done, without the start cycle. */

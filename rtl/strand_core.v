@@ -131,6 +131,10 @@ module strand_core #(
     always @(posedge clk) rd_sel_q <= seq_rd[AW-1:IW];
 
     wire [M*DW-1:0] a_pos_all, a_prev_all, a_acc_all, b_pos_all, wb_pos_all;
+    // the spring pass's force writes, per unit (the serial pass writes one unit at a time)
+    wire [M-1:0]    acc_we_all;
+    wire [M*IW-1:0] acc_idx_all;
+    wire [M*DW-1:0] acc_w_all;
     wire [M-1:0]    a_pin_all, done_all, wb_valid_all;
     wire [M*IW-1:0] wb_idx_all;
     // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
@@ -195,7 +199,22 @@ module strand_core #(
             wire unused_constraints = &{1'b0, rest_len, seq_start};
         end
 
-        if (EN_SPRINGS) begin : g_springs
+        if (EN_SPRINGS && ARCH) begin : g_spring_stream
+            // the pipelined spring pass: every unit gathers its own nodes' forces
+            spring_stream #(
+`include "strand_params_pass.vh"
+            ) u_force (
+                .clk(clk), .reset(reset), .start(force_start), .done(force_done), .rest_len(rest_len),
+                .ks(ks), .kd(kd),
+                .rd_idx(f_rd[IW-1:0]), .rd_pos_all(a_pos_all), .rd_prev_all(a_prev_all), .rd_acc_all(a_acc_all),
+                .wr_en(acc_we_all), .wr_idx_all(acc_idx_all), .wr_acc_all(acc_w_all),
+                .uidx(f_uidx), .nidx(f_nidx), .counter(f_counter));
+            assign f_rd[AW-1:IW] = {UW{1'b0}};
+            assign f_wr     = {AW{1'b0}};  // the units' writes are acc_*_all
+            assign f_wr_en  = 1'b0;
+            assign f_wr_pos = {DW{1'b0}};
+            wire unused_serial_force = &{1'b0, f_wr, f_wr_en, f_wr_pos, seq_rd_prev, seq_rd_acc};
+        end else if (EN_SPRINGS) begin : g_springs
             pair_sequencer #(
 `include "strand_params_pass.vh"
                 , .SPRING(1'b1), .PASSES(1), .E(E_SPRINGS)) u_force (
@@ -220,6 +239,14 @@ module strand_core #(
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
     generate
+        if (!(EN_SPRINGS && ARCH)) begin : g_serial_force_writes
+            for (u = 0; u < M; u = u + 1) begin : g_unit_f
+                localparam [UW-1:0] U_ID = u;
+                assign acc_we_all[u]            = f_wr_en && f_wr[AW-1:IW] == U_ID;
+                assign acc_idx_all[u*IW +: IW]  = f_wr[IW-1:0];
+                assign acc_w_all[u*DW +: DW]    = f_wr_pos;
+            end
+        end
         if (!(EN_CONSTRAINTS && ARCH)) begin : g_serial_writes
             for (u = 0; u < M; u = u + 1) begin : g_unit_w
                 localparam [UW-1:0] U_ID = u;
@@ -260,7 +287,7 @@ module strand_core #(
             wire here_init = init_we && init_addr[AW-1:IW] == U_ID;
             wire here_load = node_we && cfg_node[AW-1:IW] == U_ID;  // NODE: the address is in cfg_data, as for PIN
             wire here_seq  = seq_we[u];
-            wire here_acc  = f_wr_en && f_wr[AW-1:IW] == U_ID;
+            wire here_acc  = acc_we_all[u];
             node_unit #(
 `include "strand_params_pass.vh"
                 , .UNIT_ID(u)) u_unit (
@@ -272,9 +299,9 @@ module strand_core #(
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),
                 .a_idx(seq_rd[IW-1:0]), .a_pos(a_pos_all[u*DW +: DW]), .a_prev(a_prev_all[u*DW +: DW]),
                 .a_acc(a_acc_all[u*DW +: DW]), .a_pinned(a_pin_all[u]),
-                .acc_we(here_acc), .acc_w(f_wr_pos),
+                .acc_we(here_acc), .acc_w(acc_w_all[u*DW +: DW]),
                 .w_en(here_init || here_load || here_seq),
-                .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? f_wr[IW-1:0] : seq_widx[u*IW +: IW]),
+                .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? acc_idx_all[u*IW +: IW] : seq_widx[u*IW +: IW]),
                 .w_pos(here_init ? init_pos : here_load ? load_pos : seq_wpos[u*DW +: DW]),
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
                 .pin_en(pin_we && cfg_node[AW-1:IW] == U_ID), .pin_idx(cfg_node[IW-1:0]),

@@ -54,7 +54,14 @@ SCENES = {
     "energy": ("sim/scenes/pendulum_undamped.scene", "energy"),
     "swing": ("sim/scenes/swing_rope.scene", "none"),
     "hanging": ("sim/scenes/hanging_rope.scene", "none"),
+    "ref002": ("sim/scenes/ref002_verlet.scene", "none"),
 }
+# projection = previous against current on bodies of many links, at their cycles per frame:
+# (scene, the points' fixed settings, substeps, iterations)
+PROJECTION_GRID = [
+    ("ref002", dict(damping=0), (8, 16, 32, 64), (1, 2, 4)),      # the reference-002 rope, undamped: energy is the method's
+    ("catenary", dict(rule="centred"), (1, 2, 4, 8), (1, 2, 4, 8, 16)),
+]
 # Base of the one-knob sweeps: the catenary scene's own time settings.
 BASE = dict(substeps=4, iterations=8, rule="centred")
 # The targets of the issue for the default Q16.16 build (scene, field, bound, what).
@@ -63,7 +70,7 @@ TARGETS = [
     ("pendulum", "check_fx.error_pct", 0.5, "pendulum period against 2 pi sqrt(L/g)", "%"),
     ("catenary", "check_fx.error_pct", 1.0, "catenary shape, largest node distance", "% of span"),
     ("energy", "check_fx.error_pct", 1.0, "energy drift of the undamped pendulum over 10^5 frames", "%"),
-    ("energy", "check_fx.error_pct", 1.0, "the same, projection = previous (SHAKE; the C model only so far)", "%",
+    ("energy", "check_fx.error_pct", 1.0, "the same, projection = previous (SHAKE)", "%",
      {"projection": "previous"}),
 ]
 
@@ -79,7 +86,7 @@ def fmt_name(w, f):
 
 
 def point(scene, w=32, f=16, sqrt_bits=None, div_bits=None, substeps=None, iterations=None, rule=None, frames=None,
-          order=None, projection=None, reverse=False):
+          order=None, projection=None, reverse=False, damping=None):
     path, check = SCENES[scene]
     p = dict(scene=scene, path=path, check=check, width=w, frac=f, sqrt_bits=sqrt_bits or w - 1,
              div_bits=div_bits or w - 1, substeps=substeps, iterations=iterations, rule=rule, frames=frames,
@@ -88,6 +95,8 @@ def point(scene, w=32, f=16, sqrt_bits=None, div_bits=None, substeps=None, itera
         p["projection"] = projection
     if reverse:  # run back as long after the run (sweep --reverse)
         p["reverse"] = True
+    if damping is not None:  # the scene's Verlet damping replaced
+        p["damping"] = damping
     return p
 
 
@@ -131,6 +140,12 @@ def study_points():
     # 5c. time reversibility: the undamped pendulum run forward, then back, in each projection
     pts.append(point("energy", reverse=True))
     pts.append(point("energy", projection="previous", reverse=True))
+    # 5d. projection = previous against current on long bodies (PROJECTION_GRID)
+    for scene, fixed, subs, iters in PROJECTION_GRID:
+        for proj in (None, "previous"):
+            for sub in subs:
+                for it in iters:
+                    pts.append(point(scene, substeps=sub, iterations=it, projection=proj, **fixed))
     # 6. the constraint order: red/black (the pipelined architecture) against the serial points of 1. and 5.
     for rule in ("centred", "pairwise"):
         for i in POW2:
@@ -165,6 +180,8 @@ def derive(p):
         want["constraints"]["order"] = p["order"]
     if p.get("projection"):
         want["constraints"]["projection"] = p["projection"]
+    if p.get("damping") is not None:
+        want["time"]["damping"] = p["damping"]
     lines = open(os.path.join(ROOT, p["path"])).read().splitlines()
     out, section, done = [], None, set()
 
@@ -233,6 +250,8 @@ def label(p):
         s += f" {p['order']}"
     if p.get("projection"):
         s += f" projection={p['projection']}"
+    if p.get("damping") is not None:
+        s += f" damping={p['damping']}"
     return s
 
 
@@ -520,6 +539,67 @@ def find(results, scene, **kw):
 def one(results, scene, **kw):
     m = find(results, scene, **kw)
     return m[0] if m else None
+
+
+def projection_section(A, results):
+    """projection = previous against current on the PROJECTION_GRID bodies, and at equal cycles."""
+    A("### Projection along the previous direction on long bodies, at equal cycles")
+    A("")
+    A("`projection = previous` costs cycles: `toward_prev` takes 2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20 cycles a "
+      "correction where `toward` takes SQRT_BITS + DIV_BITS + 2 DIM + 10 (docs/architecture.md), about twice. Each "
+      "body below runs both ways over a grid of substeps and iterations (Q16.16; cycles per frame from the RTL "
+      "formula, the serial build). Energy change is over the run, as % of the larger of the starting energy and the "
+      "largest kinetic energy (the quantity `strand run` prints); stretch is the largest link stretch over the run.")
+    A("")
+    for scene, fixed, subs, iters in PROJECTION_GRID:
+        cur = {(r["substeps"], r["iterations"]): r for r in find(results, scene, **fixed) if "error" not in r}
+        prev = {(r["substeps"], r["iterations"]): r for r in find(results, scene, projection="previous", **fixed)
+                if "error" not in r}
+        if not cur or not prev:
+            continue
+        any_r = next(iter(cur.values()))
+        desc = (f"`{SCENES[scene][0]}`" + (", damping 0" if fixed.get("damping") == 0 else "")
+                + f", {any_r['nodes']} nodes, {any_r['rule']} rule, {any_r['frames']} frames")
+        shape = scene == "catenary"
+        A(f"**{desc}.**")
+        A("")
+        A("| substeps x iterations | cycles/frame, current | energy | stretch | " + ("shape error | " if shape else "")
+          + "cycles/frame, previous | energy | stretch | " + ("shape error | " if shape else "") + "fallbacks |")
+        A("|---|--:|--:|--:|" + ("--:|" if shape else "") + "--:|--:|--:|" + ("--:|" if shape else "") + "--:|")
+        for key in sorted(set(cur) & set(prev)):
+            c, q = cur[key], prev[key]
+
+            def cols(r):
+                out = [g(r["cycles"]), f"{g(get(r, 'drift_pct_fx'))} %", f"{g(get(r, 'stretch_max_fx'))} %"]
+                if shape:
+                    out.append(f"{g(get(r, 'check_fx.error_pct'))} %")
+                return out
+            A(f"| {key[0]} x {key[1]} | " + " | ".join(cols(c) + cols(q)) + f" | {g(get(q, 'fallbacks_fx'))} |")
+        A("")
+        # equal cycles: for each previous point, the best current point that costs no more
+        lines = []
+        for key in sorted(prev):
+            q = prev[key]
+            within = [r for r in cur.values() if r["cycles"] <= q["cycles"]]
+            if not within:
+                continue
+            best = min(within, key=lambda r: abs(get(r, "drift_pct_fx") or 1e9))
+            lines.append((key, q, best))
+        if lines:
+            A("At equal cycles: each `previous` setting against the `current` setting of no more cycles that keeps "
+              "energy best:")
+            A("")
+            A("| previous | cycles/frame | energy | stretch | best current within those cycles | cycles/frame | energy | stretch |")
+            A("|---|--:|--:|--:|---|--:|--:|--:|")
+            for key, q, b in lines:
+                A(f"| {key[0]} x {key[1]} | {g(q['cycles'])} | {g(get(q, 'drift_pct_fx'))} % | "
+                  f"{g(get(q, 'stretch_max_fx'))} % | {b['substeps']} x {b['iterations']} | {g(b['cycles'])} | "
+                  f"{g(get(b, 'drift_pct_fx'))} % | {g(get(b, 'stretch_max_fx'))} % |")
+            wins = sum(1 for _, q, b in lines if abs(get(q, "drift_pct_fx")) < abs(get(b, "drift_pct_fx")))
+            A("")
+            A(f"`previous` keeps energy better than every `current` setting of no more cycles in {wins} of "
+              f"{len(lines)} budgets.")
+            A("")
 
 
 def small_steps(results):
@@ -931,6 +1011,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     A(f"![period]({files['period']})")
     A("")
     # Pareto
+    projection_section(A, results)
     A("## Error against cycles per frame")
     A("")
     A(f"Every catenary point ({len(cat_all)} with finite results and gravity above half an LSB per substep): four "

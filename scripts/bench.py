@@ -37,6 +37,7 @@ BUILDS = ["4x5", "8x8", "16x16"]
 PHYS_BUILDS = ["4x5", "8x8", "16x16", "8x128"]
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
+SPRING_BUILDS = ["4x5", "8x128"]  # tb/bench/springs_<build>.scene: chains of springs
 ROPE = "8x128"            # the 1024-node rope
 ITER_STEPS = [1, 4, 16, 64, 256, 1024]  # its iteration counts in the rope table
 CPU_SECONDS = "1.5"
@@ -166,6 +167,24 @@ def rope(rows):
     return out
 
 
+def springs():
+    """The spring pass in both architectures: spring updates per clock in the spring passes,
+    counted by the harness on the RTL (as markdown lines)."""
+    lines = ["| build | architecture | springs | cycles per frame (RTL) | spring updates per clock in the spring "
+             "passes (of M) |", "|---|---|---|---|---|"]
+    for b in SPRING_BUILDS:
+        scene = f"tb/bench/springs_{b}.scene"
+        m, k = (int(x) for x in b.split("x"))
+        for arch, order, _ in ARCHS:
+            text = sh([harness_for(scene, order), scene, "--frames", "3", "--mode", "rtl", "--order", order])
+            cyc = int(re.search(r"cycles per frame\s+(\d+)", text).group(1))
+            u = re.search(r"spring updates\s+(\d+) per frame: ([\d.]+) per clock", text)
+            per_clock = float(u.group(2))
+            lines.append(f"| {b} | {arch} | {m * k - 1} | {cyc} | {per_clock:.4f} ({per_clock / m:.3f} M) |")
+            print(f"bench springs {b} {arch}: {cyc} cycles/frame, {per_clock:.4f} spring updates/clock", flush=True)
+    return lines
+
+
 def write_variant(scene, iterations, name):
     """scene with `iterations` constraint iterations per substep, written under build/bench/."""
     out = os.path.join(BUILD, "bench", f"{name}.scene")
@@ -228,6 +247,14 @@ def main():
              "counted by the harness on the RTL (Verilator, RTL alone); updates/s = updates per clock over whole "
              "frames x fmax.", "",
              *phys, "",
+             "## The spring pass", "",
+             "Spring updates are spring forces gathered (one a link, both ends), counted over every substep of "
+             "`tb/bench/springs_<build>.scene` (a chain of damped springs, no rods, Q16.16). *Serial* is "
+             "pair_sequencer (one spring_force datapath for the body, link after link); *pipelined* is ARCH = 1 "
+             "(spring_stream: every unit streams its links through its own spring_force_pipe, one a clock, and "
+             "gathers its nodes' forces in link order, so its ceiling is M springs a clock less one fill and drain "
+             "of the pipe a pass). Cycles counted by the harness on the RTL.", "",
+             *springs(), "",
              "## Simulation speed", "",
              "Simulated clock cycles per second of the Verilator harness (`tb/harness.cpp`), the median of "
              f"{REPEATS} runs (the three modes take turns within each repeat), by its own counter (wall-clock time of the run loop). Each run resets the core, writes "

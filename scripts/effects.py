@@ -713,6 +713,17 @@ def write_doc(o, rows, res, body_name, body):
     w("Cycles per frame: " + (", ".join(free) + " add none" if free else "every effect adds some")
       + ("; " + ", ".join(costly) if costly else "") + ".")
     w("")
+    prev = [r for r in rows[1:] if r["params"].get("PROJECTION")]
+    if prev:
+        w("`projection = previous` (SHAKE, docs/model.md) stores nothing extra: the previous positions it "
+          "needs are the ones Verlet keeps, read from port A with the positions (the centred sequencer holds "
+          "them in its window of three nodes beside the positions). It replaces `toward` by `toward_prev`, which "
+          "keeps a `toward` for its fallback and adds a multiplier, a root and a divider of its own: "
+          + "; ".join(f"{r['title']}: {signed(fig(r, 'S')['cells'] - fig(r, 'B')['cells'])} generic cells and "
+                      f"{signed(fig(r, 'S')['cycles'] - fig(r, 'B')['cycles'])} cycles per frame "
+                      f"({fig(r, 'S')['cycles'] / fig(r, 'B')['cycles']:.2f}x)" for r in prev)
+          + ". The pipelined pass does not build it.")
+        w("")
     cols = {"cells": "generic cells", "ice_lut": "iCE40 LUT4", "ice_ff": "iCE40 DFF", "ecp_lut": "ECP5 LUT4",
             "ecp_ff": "ECP5 FF", "ecp_dsp": "ECP5 MULT18X18D"}
     neg = [f"{r['title']}: {cols[k]} {signed(fig(r, 'S')[k] - fig(r, 'B')[k])}" for r in rows[1:] for k in cols

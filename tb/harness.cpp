@@ -106,6 +106,7 @@ struct Result {
     int frames = 0;
     long frame_cycles_min = -1, frame_cycles_max = -1;
     long constrain_cycles = 0;                // cycles in the constraint phase, over the frames
+    long force_cycles = 0;                    // cycles in the spring pass (phase FORCE), over the frames
     uint64_t digest = 1469598103934665603ull; // FNV-1a over every output of every cycle
     long predicted_fault = -1;                // --expect-fault: the cycle the fault must show at
     int resets = 0;                           // random resets applied
@@ -388,6 +389,7 @@ Result Run::go(int frames) {
                 break;
             }
             if (phase() == PH_CONSTRAIN) r_.constrain_cycles++;
+            if (phase() == PH_FORCE) r_.force_cycles++;
             if (!cycle(in)) return r_;
         } while (!frame_done());
         if (interrupted) { // start the scene again, in the model and in the double reference
@@ -564,11 +566,17 @@ int main(int argc, char **argv) {
     long links = 0;
     for (int e = 0; e < sc.n_edges; e++) links += sc.edges[e].kind != EDGE_SPRING;
     const long updates = sc.en_constraints ? (long)sc.substeps * sc.iterations * (sc.rule == RULE_CENTRED ? sc.n_nodes : links) : 0;
+    // and spring updates (one a spring edge) per clock in the spring passes
+    const long springs = sc.en_springs ? (long)sc.substeps * (sc.n_edges - links) : 0;
     auto throughput = [&]() {
-        if (!updates || r.frames < 1 || r.frame_cycles_max < 1) return;
-        std::printf("  constraint updates    %ld per frame: %.4f per clock over the frame, %.4f per clock in the "
-                    "constraint passes (%d units)\n", updates, (double)updates / (double)r.frame_cycles_max,
-                    r.constrain_cycles ? (double)updates * r.frames / (double)r.constrain_cycles : 0.0, hp.m);
+        if (r.frames < 1 || r.frame_cycles_max < 1) return;
+        if (updates)
+            std::printf("  constraint updates    %ld per frame: %.4f per clock over the frame, %.4f per clock in the "
+                        "constraint passes (%d units)\n", updates, (double)updates / (double)r.frame_cycles_max,
+                        r.constrain_cycles ? (double)updates * r.frames / (double)r.constrain_cycles : 0.0, hp.m);
+        if (springs)
+            std::printf("  spring updates        %ld per frame: %.4f per clock in the spring passes (%d units)\n", springs,
+                        r.force_cycles ? (double)springs * r.frames / (double)r.force_cycles : 0.0, hp.m);
     };
     if (o.mode != "lockstep") {
         std::printf("%s alone %s: %d frames, %ld cycles (nothing compared)\n", o.mode == "rtl" ? "RTL" : "cycle model", sc.name,

@@ -1,0 +1,238 @@
+`default_nettype none
+`timescale 1ns / 1ps
+
+`include "strand_defs.vh"
+
+/*
+ * spring_force_pipe - spring_force, pipelined: a new spring (A, A-, B, B-, rest) every
+ * clock, its force a fixed number of cycles later.
+ *
+ * Computes exactly what spring_force computes (model/engine_body.h spring_edge(), in its
+ * order of operations): with d = B - A, v_a = A - A-, v_b = B - B- (saturating, per axis)
+ *     len = fx_sqrt(d.d)                        the exact 2W-bit sum of exact squares
+ *     u.k = fx_div_signed(d.k, len)             |d.k| / len on fx_div_pipe, sign restored
+ *     vn  = sum_k round(dv.k u.k)               dv = v_b - v_a, summed in axis order
+ *     f   = round(ks (len - rest) + kd vn)      the two exact products summed (clamped to
+ *                                               2W bits), rounded once (fx_mac2)
+ *     F.k = round(f u.k)                        the force on A; B takes -F
+ * ok = 0 when len = 0 (the dividers' divide-by-zero flag): no force.
+ *
+ * Algorithm: the root and the dividers are fx_sqrt_pipe and fx_div_pipe (the digit-by-
+ * digit root and divide of fx_sqrt and fx_div, one stage per resolved bit, so SQRT_BITS
+ * and DIV_BITS stay the accuracy knobs and the results are spring_force's bit for bit).
+ * DIM dividers run side by side (one per component of u); every multiply is an
+ * fx_mul_pipe of its own (DIM squares, DIM vn products, ks and kd, DIM forces). Values
+ * needed again later ride beside the root and the dividers in delay_line rings.
+ *
+ * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
+ *   1 d, v_a, v_b        2 dv; |d| and the signs; the squares start (two cycles)
+ *   4 their sum          5 .. the root: len there in T_LEN = SQRT_BITS + 8
+ *   T_LEN                the dividers start; len - rest
+ *   T_U = T_LEN + DIV_BITS + 3   the quotients; u.k, signed, registered
+ *   T_U + 1              the vn products start    T_U + 3  rounded
+ *   T_U + 4, + 5         vn summed in axis order  T_U + 6  ks (len - rest) and kd vn start
+ *   T_U + 8              their exact sum          T_U + 9  f rounded
+ *   T_U + 10             the forces start         T_U + 12 rounded, on the outputs at T_U + 13
+ * LATENCY = SQRT_BITS + DIV_BITS + 24 (model/timing.c hw_spring_pipe_latency): an operation
+ * on the inputs in cycle 0 has out_valid, out_f, out_ok and out_tag in cycle LATENCY.
+ * Throughput one spring per clock. ks and kd are run-time constants, read where they are
+ * used (they must not change during a pass).
+ *
+ * Ports: a, a_p, b, b_p, out_f are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W);
+ * rest unsigned Q(W-F).F; tag: TAG_W bits the caller gets back with the result. Only the
+ * valid bits are reset.
+ */
+module spring_force_pipe #(
+    parameter integer W         = 32,
+    parameter integer F         = 16,
+    parameter integer SQRT_BITS = W - 1,
+    parameter integer DIV_BITS  = W - 1,
+    parameter integer DIM       = 2,
+    parameter integer TAG_W     = 1,
+    parameter integer BLOCK_MIN = 64      // delay rings: strand_ram's block RAM threshold
+) (
+    input  wire             clk,
+    input  wire             reset,        // synchronous, active high: the valid bits
+    input  wire             in_valid,
+    input  wire [DIM*W-1:0] in_a,
+    input  wire [DIM*W-1:0] in_ap,
+    input  wire [DIM*W-1:0] in_b,
+    input  wire [DIM*W-1:0] in_bp,
+    input  wire [W-1:0]     in_rest,
+    input  wire [TAG_W-1:0] in_tag,
+    input  wire [W-1:0]     ks,           // scaled stiffness and damping (run-time constants)
+    input  wire [W-1:0]     kd,
+    output wire             out_valid,
+    output reg  [DIM*W-1:0] out_f,        // the force on A
+    output reg              out_ok,       // 0: zero length, no force
+    output wire [TAG_W-1:0] out_tag
+);
+
+    `STRAND_CHECK(spring_force_pipe_W, W >= 8 && W <= 32, ("spring_force_pipe: W must be 8..32 (W=%0d) in %m", W))
+    `STRAND_CHECK(spring_force_pipe_DIM, DIM == 2 || DIM == 3, ("spring_force_pipe: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
+
+    localparam integer DW      = DIM * W;
+    localparam integer T_LEN   = SQRT_BITS + 8;          // len on the root's output
+    localparam integer T_U     = T_LEN + DIV_BITS + 3;   // the quotients on the dividers' outputs
+    localparam integer LATENCY = T_U + 13;
+
+    // ---- the valid bits: bit i is the operation in cycle i + 1 ----
+    reg [LATENCY-1:0] v_q;
+    always @(posedge clk)
+        if (reset) v_q <= {LATENCY{1'b0}};
+        else v_q <= {v_q[LATENCY-2:0], in_valid};
+    assign out_valid = v_q[LATENCY-1];
+    delay_line #(.WIDTH(TAG_W), .DELAY(LATENCY), .BLOCK_MIN(BLOCK_MIN)) u_tag_ring (
+        .clk(clk), .reset(reset), .in(in_tag), .out(out_tag));
+
+    // ---- cycle 1: d = B - A, v_a = A - A-, v_b = B - B- ----
+    reg [DW-1:0] a1, ap1, b1, bp1;
+    reg [W-1:0]  rest1, rest2;
+    always @(posedge clk) begin
+        {a1, ap1, b1, bp1, rest1} <= {in_a, in_ap, in_b, in_bp, in_rest};
+        rest2 <= rest1;
+    end
+    wire [DW-1:0] d1, va1, vb1, dv2, dabs2;
+    reg  [DW-1:0] d2, va2, vb2;
+    reg  [DIM-1:0] dneg2;
+    /* verilator lint_off PINCONNECTEMPTY */
+    // saturation flags: the saturated value is the result
+    genvar k;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_diff
+            fx_add #(.W(W), .SUB(1)) u_d  (.sub(1'b1), .a(b1[k*W +: W]), .b(a1[k*W +: W]),  .y(d1[k*W +: W]),  .sat());
+            fx_add #(.W(W), .SUB(1)) u_va (.sub(1'b1), .a(a1[k*W +: W]), .b(ap1[k*W +: W]), .y(va1[k*W +: W]), .sat());
+            fx_add #(.W(W), .SUB(1)) u_vb (.sub(1'b1), .a(b1[k*W +: W]), .b(bp1[k*W +: W]), .y(vb1[k*W +: W]), .sat());
+            // cycle 2: dv = v_b - v_a; |d.k| (-2^(W-1) reads 2^(W-1) unsigned) and its sign
+            fx_add #(.W(W), .SUB(1)) u_dv (.sub(1'b1), .a(vb2[k*W +: W]), .b(va2[k*W +: W]), .y(dv2[k*W +: W]), .sat());
+            assign dabs2[k*W +: W] = d2[k*W + W - 1] ? ~d2[k*W +: W] + 1'b1 : d2[k*W +: W];
+            always @(posedge clk) dneg2[k] <= d1[k*W + W - 1];
+        end
+    endgenerate
+    /* verilator lint_on PINCONNECTEMPTY */
+    always @(posedge clk) {d2, va2, vb2} <= {d1, va1, vb1};
+
+    // ---- cycles 2 .. 4: the squares, their sum; then the root ----
+    wire [DIM*2*W-1:0] sq4;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_sq
+            fx_mul_pipe #(.W(W)) u_sq (.clk(clk), .a(d2[k*W +: W]), .b(d2[k*W +: W]), .prod(sq4[k*2*W +: 2*W]));
+        end
+    endgenerate
+    reg [2*W-1:0] radicand5;  // each square <= 2^(2W-2): three fit 2W bits
+    always @(posedge clk)
+        radicand5 <= sq4[0 +: 2*W] + sq4[2*W +: 2*W] + (DIM == 3 ? sq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
+    wire [W-1:0] len;
+    /* verilator lint_off PINCONNECTEMPTY */
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+
+    // rings from cycle 2: |d| and rest to T_LEN; dv and the signs to T_U
+    wire [DW-1:0]  dabs_len, dv_u;
+    wire [W-1:0]   rest_len;
+    wire [DIM-1:0] dneg_u;
+    delay_line #(.WIDTH(DW + W), .DELAY(T_LEN - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
+        .clk(clk), .reset(reset), .in({rest2, dabs2}), .out({rest_len, dabs_len}));
+    delay_line #(.WIDTH(DW + DIM), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_dv_ring (
+        .clk(clk), .reset(reset), .in({dneg2, dv2}), .out({dneg_u, dv_u}));
+
+    // ---- T_LEN: the dividers start; stretch = len - rest, carried to T_U + 6 ----
+    wire [DW-1:0]  qmag;     // |u.k|
+    wire [DIM-1:0] dz;
+    wire [W-1:0]   stretch_len, stretch_f;
+    /* verilator lint_off PINCONNECTEMPTY */
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_div
+            fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
+                .clk(clk), .num(dabs_len[k*W +: W]), .den(len), .result(qmag[k*W +: W]), .div_by_zero(dz[k]), .sat());
+        end
+    endgenerate
+    fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len), .b(rest_len), .y(stretch_len), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+    reg [W-1:0] stretch_q;
+    always @(posedge clk) stretch_q <= stretch_len;
+    delay_line #(.WIDTH(W), .DELAY(T_U + 6 - (T_LEN + 1)), .BLOCK_MIN(BLOCK_MIN)) u_stretch_ring (
+        .clk(clk), .reset(reset), .in(stretch_q), .out(stretch_f));
+
+    // ---- T_U: u.k with its sign; T_U + 1: the vn products ----
+    reg [DW-1:0] u1, dv1;     // in cycle T_U + 1
+    reg          ok1;
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_u
+            always @(posedge clk)
+                u1[k*W +: W] <= dneg_u[k] ? ~qmag[k*W +: W] + 1'b1 : qmag[k*W +: W];  // |u.k| <= 2^(W-1)-1
+        end
+    endgenerate
+    always @(posedge clk) begin
+        dv1 <= dv_u;
+        ok1 <= !dz[0];        // every divider has den = len: one flag says it
+    end
+    wire unused_dz = &{1'b0, dz[DIM-1:1]};
+    wire [DIM*2*W-1:0] vprod;  // in T_U + 3
+    wire [DW-1:0]      vround;
+    reg  [DW-1:0]      vterm;  // in T_U + 4
+    /* verilator lint_off PINCONNECTEMPTY */
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_vn
+            fx_mul_pipe #(.W(W)) u_vmul (.clk(clk), .a(dv1[k*W +: W]), .b(u1[k*W +: W]), .prod(vprod[k*2*W +: 2*W]));
+            fx_round #(.W(W), .F(F)) u_vround (.prod(vprod[k*2*W +: 2*W]), .y(vround[k*W +: W]), .sat());
+        end
+    endgenerate
+    /* verilator lint_on PINCONNECTEMPTY */
+    always @(posedge clk) vterm <= vround;
+    // vn = 0 + t0 + t1 [+ t2], saturating, in axis order: two stages
+    wire [W-1:0] sum01, sum012;
+    reg  [W-1:0] sum01_q, t2_q, vn_q;  // sum01_q, t2_q in T_U + 5; vn_q in T_U + 6
+    /* verilator lint_off PINCONNECTEMPTY */
+    fx_add #(.W(W), .SUB(0)) u_vn01 (.sub(1'b0), .a(vterm[0 +: W]), .b(vterm[W +: W]), .y(sum01), .sat());
+    fx_add #(.W(W), .SUB(0)) u_vn2 (.sub(1'b0), .a(sum01_q), .b(t2_q), .y(sum012), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+    always @(posedge clk) begin
+        sum01_q <= sum01;
+        t2_q    <= DIM == 3 ? vterm[(DIM-1)*W +: W] : {W{1'b0}};  // 2D: + 0 changes nothing
+        vn_q    <= sum012;
+    end
+
+    // ---- T_U + 6: ks (len - rest) and kd vn, exact; T_U + 8 their sum; T_U + 9 f ----
+    wire [2*W-1:0] t_ks, t_kd;
+    fx_mul_pipe #(.W(W)) u_ks (.clk(clk), .a(ks), .b(stretch_f), .prod(t_ks));
+    fx_mul_pipe #(.W(W)) u_kd (.clk(clk), .a(kd), .b(vn_q), .prod(t_kd));
+    wire [2*W:0]   mac_wide = {t_ks[2*W-1], t_ks} + {t_kd[2*W-1], t_kd};
+    wire           mac_over = mac_wide[2*W] != mac_wide[2*W-1];
+    reg  [2*W-1:0] mac_q;     // clamped to 2W bits: beyond them f saturates either way
+    always @(posedge clk) mac_q <= mac_over ? {mac_wide[2*W], {(2*W-1){!mac_wide[2*W]}}} : mac_wide[2*W-1:0];
+    wire [W-1:0] f_round;
+    reg  [W-1:0] f_q;         // in T_U + 10
+    /* verilator lint_off PINCONNECTEMPTY */
+    fx_round #(.W(W), .F(F)) u_fround (.prod(mac_q), .y(f_round), .sat());
+    /* verilator lint_on PINCONNECTEMPTY */
+    always @(posedge clk) f_q <= f_round;
+
+    // u and ok from T_U + 1 to T_U + 10
+    wire [DW-1:0] u_f;
+    wire          ok_f;
+    delay_line #(.WIDTH(DW + 1), .DELAY(9), .BLOCK_MIN(BLOCK_MIN)) u_u_ring (
+        .clk(clk), .reset(reset), .in({ok1, u1}), .out({ok_f, u_f}));
+
+    // ---- T_U + 10: the forces F.k = f u.k; rounded in T_U + 12; out in T_U + 13 ----
+    wire [DIM*2*W-1:0] fprod;
+    wire [DW-1:0]      fround;
+    reg                ok_11, ok_12;
+    /* verilator lint_off PINCONNECTEMPTY */
+    generate
+        for (k = 0; k < DIM; k = k + 1) begin : g_f
+            fx_mul_pipe #(.W(W)) u_fmul (.clk(clk), .a(f_q), .b(u_f[k*W +: W]), .prod(fprod[k*2*W +: 2*W]));
+            fx_round #(.W(W), .F(F)) u_fr (.prod(fprod[k*2*W +: 2*W]), .y(fround[k*W +: W]), .sat());
+        end
+    endgenerate
+    /* verilator lint_on PINCONNECTEMPTY */
+    always @(posedge clk) begin
+        ok_11  <= ok_f;
+        ok_12  <= ok_11;
+        out_ok <= ok_12;
+        out_f  <= fround;
+    end
+
+endmodule
+
+`resetall
