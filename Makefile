@@ -194,7 +194,7 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
 	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit
-	@for s in $(wildcard tb/bench/*.scene) sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
+	@for s in $(wildcard tb/bench/bench_*.scene) sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
 
 # Every shipped scene runs in both formats.

@@ -35,11 +35,10 @@
  *   T_U + 10             the forces start         T_U + 12 rounded, on the outputs at T_U + 13
  * LATENCY = SQRT_BITS + DIV_BITS + 24 (model/timing.c hw_spring_pipe_latency): an operation
  * on the inputs in cycle 0 has out_valid, out_f, out_ok and out_tag in cycle LATENCY.
- * Throughput one spring per clock. ks and kd are run-time constants, read where they are
- * used (they must not change during a pass).
+ * Throughput one spring per clock. ks and kd come with each spring and ride beside it.
  *
  * Ports: a, a_p, b, b_p, out_f are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W);
- * rest unsigned Q(W-F).F; tag: TAG_W bits the caller gets back with the result. Only the
+ * rest unsigned Q(W-F).F; ks, kd the scaled stiffness and damping, signed Q(W-F).F; tag: TAG_W bits the caller gets back with the result. Only the
  * valid bits are reset.
  */
 module spring_force_pipe #(
@@ -59,9 +58,9 @@ module spring_force_pipe #(
     input  wire [DIM*W-1:0] in_b,
     input  wire [DIM*W-1:0] in_bp,
     input  wire [W-1:0]     in_rest,
+    input  wire [W-1:0]     in_ks,        // scaled stiffness and damping
+    input  wire [W-1:0]     in_kd,
     input  wire [TAG_W-1:0] in_tag,
-    input  wire [W-1:0]     ks,           // scaled stiffness and damping (run-time constants)
-    input  wire [W-1:0]     kd,
     output wire             out_valid,
     output reg  [DIM*W-1:0] out_f,        // the force on A
     output reg              out_ok,       // 0: zero length, no force
@@ -87,10 +86,10 @@ module spring_force_pipe #(
 
     // ---- cycle 1: d = B - A, v_a = A - A-, v_b = B - B- ----
     reg [DW-1:0] a1, ap1, b1, bp1;
-    reg [W-1:0]  rest1, rest2;
+    reg [W-1:0]  rest1, rest2, ks1, ks2, kd1, kd2;
     always @(posedge clk) begin
-        {a1, ap1, b1, bp1, rest1} <= {in_a, in_ap, in_b, in_bp, in_rest};
-        rest2 <= rest1;
+        {a1, ap1, b1, bp1, rest1, ks1, kd1} <= {in_a, in_ap, in_b, in_bp, in_rest, in_ks, in_kd};
+        {rest2, ks2, kd2} <= {rest1, ks1, kd1};
     end
     wire [DW-1:0] d1, va1, vb1, dv2, dabs2;
     reg  [DW-1:0] d2, va2, vb2;
@@ -127,19 +126,19 @@ module spring_force_pipe #(
     fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
-    // rings from cycle 2: |d| and rest to T_LEN; dv and the signs to T_U
+    // rings from cycle 2: |d|, rest, ks and kd to T_LEN; dv and the signs to T_U
     wire [DW-1:0]  dabs_len, dv_u;
-    wire [W-1:0]   rest_len;
+    wire [W-1:0]   rest_len, ks_len, kd_len;
     wire [DIM-1:0] dneg_u;
-    delay_line #(.WIDTH(DW + W), .DELAY(T_LEN - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
-        .clk(clk), .reset(reset), .in({rest2, dabs2}), .out({rest_len, dabs_len}));
+    delay_line #(.WIDTH(DW + 3 * W), .DELAY(T_LEN - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
+        .clk(clk), .reset(reset), .in({kd2, ks2, rest2, dabs2}), .out({kd_len, ks_len, rest_len, dabs_len}));
     delay_line #(.WIDTH(DW + DIM), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_dv_ring (
         .clk(clk), .reset(reset), .in({dneg2, dv2}), .out({dneg_u, dv_u}));
 
-    // ---- T_LEN: the dividers start; stretch = len - rest, carried to T_U + 6 ----
+    // ---- T_LEN: the dividers start; stretch = len - rest, carried to T_U + 6 with ks and kd ----
     wire [DW-1:0]  qmag;     // |u.k|
     wire [DIM-1:0] dz;
-    wire [W-1:0]   stretch_len, stretch_f;
+    wire [W-1:0]   stretch_len, stretch_f, ks_f, kd_f;
     /* verilator lint_off PINCONNECTEMPTY */
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_div
@@ -149,10 +148,10 @@ module spring_force_pipe #(
     endgenerate
     fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len), .b(rest_len), .y(stretch_len), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
-    reg [W-1:0] stretch_q;
-    always @(posedge clk) stretch_q <= stretch_len;
-    delay_line #(.WIDTH(W), .DELAY(T_U + 6 - (T_LEN + 1)), .BLOCK_MIN(BLOCK_MIN)) u_stretch_ring (
-        .clk(clk), .reset(reset), .in(stretch_q), .out(stretch_f));
+    reg [W-1:0] stretch_q, ks_q, kd_q;
+    always @(posedge clk) {stretch_q, ks_q, kd_q} <= {stretch_len, ks_len, kd_len};
+    delay_line #(.WIDTH(3 * W), .DELAY(T_U + 6 - (T_LEN + 1)), .BLOCK_MIN(BLOCK_MIN)) u_stretch_ring (
+        .clk(clk), .reset(reset), .in({kd_q, ks_q, stretch_q}), .out({kd_f, ks_f, stretch_f}));
 
     // ---- T_U: u.k with its sign; T_U + 1: the vn products ----
     reg [DW-1:0] u1, dv1;     // in cycle T_U + 1
@@ -195,8 +194,8 @@ module spring_force_pipe #(
 
     // ---- T_U + 6: ks (len - rest) and kd vn, exact; T_U + 8 their sum; T_U + 9 f ----
     wire [2*W-1:0] t_ks, t_kd;
-    fx_mul_pipe #(.W(W)) u_ks (.clk(clk), .a(ks), .b(stretch_f), .prod(t_ks));
-    fx_mul_pipe #(.W(W)) u_kd (.clk(clk), .a(kd), .b(vn_q), .prod(t_kd));
+    fx_mul_pipe #(.W(W)) u_ks (.clk(clk), .a(ks_f), .b(stretch_f), .prod(t_ks));
+    fx_mul_pipe #(.W(W)) u_kd (.clk(clk), .a(kd_f), .b(vn_q), .prod(t_kd));
     wire [2*W:0]   mac_wide = {t_ks[2*W-1], t_ks} + {t_kd[2*W-1], t_kd};
     wire           mac_over = mac_wide[2*W] != mac_wide[2*W-1];
     reg  [2*W-1:0] mac_q;     // clamped to 2W bits: beyond them f saturates either way

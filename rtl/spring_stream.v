@@ -166,7 +166,7 @@ module spring_stream #(
                                 .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(slot),
                 .in_a(a_pos), .in_ap(a_prev), .in_b(b_pos), .in_bp(b_prev), .in_rest(rest_len),
-                .in_tag({own_acc, x, exists}), .ks(ks), .kd(kd),
+                .in_ks(ks), .in_kd(kd), .in_tag({own_acc, x, exists}),
                 .out_valid(o_valid), .out_f(o_f), .out_ok(o_ok), .out_tag(o_tag));
             wire [DW-1:0] o_acc    = o_tag[TAG_W-1 -: DW];    // node x's force so far (x < K)
             wire [XW-1:0] o_x      = o_tag[1 +: XW];

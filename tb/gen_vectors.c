@@ -6,7 +6,7 @@
  *        gen_vectors UNIT random W F SQRT_BITS DIV_BITS OUT.hex   (toward, spring)
  *   UNIT  add | mul | avg | sqrt | div, and, when built with -DGEN_DATAPATHS (linked
  *         with model/engine_fixed.c, model/scene.c and libinih), toward | toward_pipe
- *         (the same vectors; its latency file is toward_pipe.v's) | spring
+ *         (the same vectors; its latency file is toward_pipe.v's) | spring | spring_pipe (likewise)
  *   MODE  exhaustive (every operand pair, every radicand; meant for W = 8)
  *         random     (every pair of edge values, targeted cases, and random
  *                     operands from a fixed seed; the only mode of toward, spring)
@@ -667,9 +667,9 @@ static void gen_spring(void)
 int main(int argc, char **argv)
 {
     if (argc != 7 && argc != 8)
-        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring exhaustive|random W F BITS [DIV_BITS] OUT.hex");
+        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS] OUT.hex");
     const char *unit = argv[1];
-    const int datapath = !strcmp(unit, "toward") || !strcmp(unit, "toward_pipe") || !strcmp(unit, "spring");
+    const int datapath = !strcmp(unit, "toward") || !strcmp(unit, "toward_pipe") || !strcmp(unit, "spring") || !strcmp(unit, "spring_pipe");
     if (argc == 8 && !datapath) die("SQRT_BITS and DIV_BITS apart are for toward and spring");
     int exhaustive;
     if (!strcmp(argv[2], "exhaustive")) exhaustive = 1;
@@ -692,7 +692,7 @@ int main(int argc, char **argv)
     else if (!strcmp(unit, "div")) gen_div(exhaustive);
 #ifdef GEN_DATAPATHS
     else if (!strcmp(unit, "toward") || !strcmp(unit, "toward_pipe")) { dp_init(EDGE_ROD); gen_toward(); sim_fx_free(&dp_s); }
-    else if (!strcmp(unit, "spring")) { dp_init(EDGE_SPRING); gen_spring(); sim_fx_free(&dp_s); }
+    else if (!strcmp(unit, "spring") || !strcmp(unit, "spring_pipe")) { dp_init(EDGE_SPRING); gen_spring(); sim_fx_free(&dp_s); }
 #endif
     else die("unknown unit");
     if (fclose(out)) die("write failed");
@@ -706,7 +706,8 @@ int main(int argc, char **argv)
         char path[1024];
         snprintf(path, sizeof path, "%s.latency", argv[argc - 1]);
         FILE *lf = fopen(path, "w");
-        long latency = !strcmp(unit, "toward") ? hw_toward_latency(&hp) : !strcmp(unit, "toward_pipe") ? hw_toward_pipe_latency(&hp) : hw_spring_latency(&hp);
+        long latency = !strcmp(unit, "toward") ? hw_toward_latency(&hp) : !strcmp(unit, "toward_pipe") ? hw_toward_pipe_latency(&hp)
+                     : !strcmp(unit, "spring_pipe") ? hw_spring_pipe_latency(&hp) : hw_spring_latency(&hp);
         if (!lf || fprintf(lf, "%ld\n", latency) < 0 || fclose(lf))
             die("cannot write the latency file");
     }

@@ -99,7 +99,9 @@ UNITS_DP_TESTS := \
     toward_pipe_w12_f6_s8_d9:toward_pipe:12:6:8:9 \
     toward_pipe_w16_f8_s4_d6:toward_pipe:16:8:4:6 \
     spring_force_w32_f16_s31_d31:spring_force:32:16:31:31 \
-    spring_force_w12_f6_s8_d9:spring_force:12:6:8:9
+    spring_force_w12_f6_s8_d9:spring_force:12:6:8:9 \
+    spring_force_pipe_w32_f16_s31_d31:spring_force_pipe:32:16:31:31 \
+    spring_force_pipe_w12_f6_s8_d9:spring_force_pipe:12:6:8:9
 
 # Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
 UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
@@ -174,8 +176,10 @@ UNITS_INIH      = $(shell pkg-config --cflags --libs inih 2>/dev/null || echo -l
 UNITS_DP_GEN_toward       := toward
 UNITS_DP_GEN_spring_force := spring
 UNITS_DP_GEN_toward_pipe  := toward_pipe
+UNITS_DP_GEN_spring_force_pipe := spring_pipe
 # what a datapath needs beyond the arithmetic units
 UNITS_DP_DEPS_toward_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram
+UNITS_DP_DEPS_spring_force_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram
 
 # The generator with the frame engine: the expected values come from its own code.
 $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/model/timing.c $(UNITS_PARAMS_H)
@@ -247,11 +251,11 @@ lint-units:
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
-	$(foreach m,toward toward_pipe spring_force,for p in $(UNITS_LINT_PARAMS_DP); do \
+	$(foreach m,toward toward_pipe spring_force spring_force_pipe,for p in $(UNITS_LINT_PARAMS_DP); do \
 	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v); \
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
-	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,toward_pipe,spring_force}.v with the datapaths, are clean"
+	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
 
 # Planted fault: fx_mul with ties rounded up instead of to even (in fx_round, which
 # fx_mul rounds with), built from a copy in the build tree (rtl/ is untouched). The
