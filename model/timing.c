@@ -69,8 +69,8 @@ long hw_constraint_pass(const hw_params *hp)
 long hw_spring_pass(const hw_params *hp)
 {
     long springs = hp->graph ? hp->e_springs : node_count(hp) - 1;
-    if (hp->arch) /* spring_stream: one sweep */
-        return hw_spring_sweep(hp);
+    if (hp->arch) /* spring_stream: the start cycle, one sweep */
+        return 1 + hw_spring_sweep(hp);
     return 1 + springs * (hw_spring_latency(hp) + 5); /* pair_sequencer SPRING: as pairwise, per link */
 }
 
@@ -107,7 +107,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     hp->arch ? "2 sweeps (K + LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp),
-                    hp->arch ? "one sweep K + LSP + 4, LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
+                    hp->arch ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
                     hw_spring_pass(hp), verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

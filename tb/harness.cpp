@@ -587,6 +587,14 @@ int main(int argc, char **argv) {
         scene_free(&sc);
         return 0;
     }
+    // every frame takes the cycles of the one formula (model/timing.c), as the Icarus frame bench checks too
+    const long formula = hw_cycles_per_frame(&hp);
+    if (r.frames > 0 && (r.frame_cycles_min != formula || r.frame_cycles_max != formula)) {
+        std::printf("FAIL lockstep %s seed %" PRIu64 ": frames took %ld to %ld cycles, the formula (hw_cycles_per_frame) says %ld\n",
+                    sc.name, o.seed, r.frame_cycles_min, r.frame_cycles_max, formula);
+        scene_free(&sc);
+        return 1;
+    }
     std::printf("PASS lockstep %s seed %" PRIu64 ": %d frames, %ld cycles%s, every output equal in every cycle\n", sc.name, o.seed,
                 r.frames, r.cycles, r.resets ? (", " + std::to_string(r.resets) + (r.resets == 1 ? " random reset" : " random resets")).c_str() : "");
     if (!o.quiet) {
