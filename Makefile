@@ -47,7 +47,7 @@ RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 help:
 	@echo "Strand make targets:"
 	@echo "  make test        install what is missing, then run every test (ends with 'N passed, N failed')"
-	@echo "  make sim [SCENE=...] [WAVES=1]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/)"
+	@echo "  make sim [SCENE=...] [WAVES=1] [ORDER=redblack]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/); ORDER=redblack: a chain's pipelined passes"
 	@echo "  make wave [SCENE=...]  run make sim with WAVES=1 and open GTKWave on the trace"
 	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
 	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=4]  random scenes in lockstep; a failure prints its seed"
@@ -121,7 +121,7 @@ run: bootstrap
 
 sim: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
-	@scripts/sim.sh $(SCENE) $(if $(WAVES),--waves)
+	@scripts/sim.sh $(SCENE) "$(if $(WAVES),--waves)" $(ORDER)
 
 wave: bootstrap
 	@if [ -z "$$DISPLAY" ]; then echo "make wave: no display (DISPLAY is not set): GTKWave needs one; the trace alone: make sim SCENE=$(SCENE) WAVES=1" >&2; exit 1; fi

@@ -1,26 +1,30 @@
 #!/usr/bin/env bash
-# sim.sh SCENE [--waves] - the main job: SCENE on the RTL in lockstep with the C model.
+# sim.sh SCENE [--waves] [ORDER] - the main job: SCENE on the RTL in lockstep with the C model.
 #
 # Builds strand_core with exactly the scene's parameters and effects (cached), runs
 # it cycle for cycle against the cycle model, and writes into build/sim/<scene>/:
 # positions.csv (every frame end), final.png (the last frame), and with --waves an
 # FST trace and a GTKWave save file for it; a lockstep mismatch leaves mismatch.fst there.
+# ORDER (serial or redblack) replaces the scene's constraint order, as `strand run --order`
+# does: redblack builds a chain's pipelined passes (make sim ORDER=redblack).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=$1
 waves=${2:-}
+order=${3:-}
+case "$order" in ""|serial|redblack) ;; *) echo "sim.sh: ORDER must be serial or redblack (not '$order')" >&2; exit 2;; esac
 build=${BUILD:-build}
 name=$(basename "$scene" .scene)
 out=$build/sim/$name
-"$build/strand" check "$scene" >/dev/null   # a bad scene stops here, with file:line
+"$build/strand" check "$scene" ${order:+--order "$order"} >/dev/null   # a bad scene stops here, with file:line
 mkdir -p "$out"
 echo "building strand_core for $scene (Verilator; cached once built)..."
-harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene")
+harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene" ${order:+--order "$order"})
 # the harness runs in $out, so that a lockstep mismatch leaves its trace (mismatch.fst) there
 harness=$(realpath "$harness")
 scene_abs=$(realpath "$scene")
 out_abs=$(realpath "$out")
-args=(--csv "$out_abs/positions.csv" --png "$out_abs/final.png")
+args=(--csv "$out_abs/positions.csv" --png "$out_abs/final.png" ${order:+--order "$order"})
 if [ "$waves" = "--waves" ]; then
   python3 scripts/gtkw.py "$scene" "$out/strand.gtkw" waves.fst
   args+=(--trace "$out_abs/waves.fst")
