@@ -30,8 +30,8 @@ SCENES    := $(wildcard sim/scenes/*.scene)
 TOP_SRC   := $(sort $(wildcard rtl/*.v))
 # Scenes whose every frame the RTL must reproduce bit for bit (tb/scenes/ hold test-only builds).
 RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
-# projection = previous: the serial constraint pass runs it, the pipelined one does not
-# (strand hwgen refuses a chain's red/black order), so these run in the serial order only.
+# projection = previous (toward_prev, toward_prev_pipe): in both orders, as the others; kept
+# apart so that the scenes of the other steps keep their builds.
 PREV_SCENES := $(wildcard tb/scenes/previous/*.scene)
 PREV_FRAMES := rope_centred:20 chain_pair_q16:8 graph3d_held:30   # Icarus frames of each
 
@@ -169,7 +169,7 @@ HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 
 # build), the planted faults, random initial values, 50 random scenes
 test-lockstep: $(STRAND) $(GEN_HDRS)
 	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3
-	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s))
+	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
 
 lockstep-hard: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
@@ -213,7 +213,8 @@ test-scenes: $(STRAND)
 
 test-rtl-frames: $(STRAND) $(GEN_HDRS)
 	@rc=0; for s in $(RTL_SCENES); do for o in serial redblack; do scripts/top_frames.sh $$s "" $$o || rc=1; done; done; \
-	for s in $(PREV_FRAMES); do scripts/top_frames.sh tb/scenes/previous/$${s%%:*}.scene $${s##*:} serial || rc=1; done; exit $$rc
+	for s in $(PREV_FRAMES); do for o in serial redblack; do \
+	  scripts/top_frames.sh tb/scenes/previous/$${s%%:*}.scene $${s##*:} $$o || rc=1; done; done; exit $$rc
 
 # ---- lint ----
 
@@ -228,7 +229,7 @@ LINT_SCENES := $(sort $(RTL_SCENES) $(foreach s,$(LOCKSTEP_SCENES),$(firstword $
 lint-rtl: $(GEN_HDRS) $(STRAND)
 	@verilator --lint-only -Wall -I$(GEN) -Irtl $(TOP_SRC) --top-module strand_core
 	@{ for s in $(LINT_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; \
-	   for s in $(PREV_SCENES); do $(STRAND) info $$s --vflags --order serial || exit 1; done; } > $(BUILD)/lint-builds.all
+	   for s in $(PREV_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; } > $(BUILD)/lint-builds.all
 	@sort -u $(BUILD)/lint-builds.all > $(BUILD)/lint-builds.txt  # (a pipe into sort would hide a refused build)
 	@while read -r g; do verilator --lint-only -Wall -I$(GEN) -Irtl $$g $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$g"; exit 1; }; done < $(BUILD)/lint-builds.txt
 	@out=$$(iverilog -Wall -g2005 -I$(GEN) -Irtl -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi

@@ -19,8 +19,6 @@ static const char *reject(const scene *sc, const char *section, char *err, size_
 const char *hw_check(const scene *sc, char *err, size_t len)
 {
     if (sc->integrator != INTEGRATOR_VERLET) return reject(sc, "time", err, len, "explicit Euler (a C-model-only contrast)");
-    if (sc->en_constraints && sc->projection == PROJECTION_PREVIOUS && sc->body == BODY_CHAIN && sc->order == ORDER_REDBLACK)
-        return reject(sc, "constraints", err, len, "projection = previous in the pipelined pass (order = redblack); order = serial runs it");
     hw_params hp;
     hw_params_of(sc, &hp);
     char why[256];

@@ -17,6 +17,10 @@ long hw_toward_latency(const hw_params *hp)
 
 long hw_toward_pipe_latency(const hw_params *hp)
 {
+    if (hp->projection) /* toward_prev_pipe.v: q and r, r's squares and their sum, the root, the DIM unit
+                           divides, q.u (products, rounding, two sums), s u and p, p.p and rest^2 (products,
+                           sum, difference), the leg's root, leg u, o, T, the choice into the output registers */
+        return 2L * hp->sqrt_bits + hp->div_bits + 34;
     /* toward_pipe.v: d, the squares (two stages), their sum, the root (SQRT_BITS + 3), the
        divide (DIV_BITS + 3), the products (two stages), their rounding, T, the output register */
     return hp->sqrt_bits + hp->div_bits + 15L;
@@ -92,8 +96,9 @@ long hw_cycles_per_frame(const hw_params *hp)
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
     char pipe[128] = "";
-    if (hp->arch)
-        snprintf(pipe, sizeof pipe, "toward_pipe latency LP = SQRT_BITS + DIV_BITS + 15 = %ld\n", hw_toward_pipe_latency(hp));
+    if (hp->arch && hp->en_constraints)
+        snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
+                 hp->projection ? "2 SQRT_BITS + DIV_BITS + 34" : "SQRT_BITS + DIV_BITS + 15", hw_toward_pipe_latency(hp));
     return snprintf(out, (size_t)len,
                     "%s latency LT = %s = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"

@@ -59,6 +59,7 @@ module chain_stream #(
     output reg  [IW-1:0]    rd_idx,     // port A address of every unit
     input  wire [M*DIM*W-1:0] rd_pos_all,
     input  wire [M-1:0]     rd_pin_all,
+    input  wire [M*DIM*W-1:0] rd_prev_all, // PROJECTION: the previous positions, read with them
 
     output wire [M-1:0]     wr_en,
     output wire [M*IW-1:0]  wr_idx_all,
@@ -71,7 +72,8 @@ module chain_stream #(
 );
 
     localparam integer DW     = DIM * W;
-    localparam integer LT     = SQRT_BITS + DIV_BITS + 15;     // toward_pipe's latency
+    localparam integer LT     = PROJECTION ? 2 * SQRT_BITS + DIV_BITS + 34   // toward_prev_pipe's latency
+                                           : SQRT_BITS + DIV_BITS + 15;      // toward_pipe's
     localparam integer S      = K + LT + 4;                    // a sweep's cycles
     localparam integer TW     = $clog2(S + 1);
     localparam integer XW     = IW + 1;                        // a slot number, 0 .. K
@@ -161,34 +163,41 @@ module chain_stream #(
             localparam [0:0] FINAL = u == M - 1;      // node N-1 is here
 
             wire [DW-1:0] own     = rd_pos_all[u*DW +: DW];
+            wire [DW-1:0] own_pv  = rd_prev_all[u*DW +: DW];
             wire          own_pin = rd_pin_all[u];
             reg  [DW-1:0] left_q, right_q, prev_q;
+            reg  [DW-1:0] left_pv, right_pv, prev_pv;               // their previous positions (PROJECTION)
             reg           left_pin, right_pin, prev_pin;
             wire          at_k    = x == X_K;
             wire          at_0    = x == {XW{1'b0}};
             wire [DW-1:0] arr     = at_k ? right_q : own;       // node x
+            wire [DW-1:0] arr_pv  = at_k ? right_pv : own_pv;
             wire          arr_pin = at_k ? right_pin : own_pin;
             wire [DW-1:0] prv     = at_0 ? left_q : prev_q;     // node x-1
+            wire [DW-1:0] prv_pv  = at_0 ? left_pv : prev_pv;
             wire          prv_pin = at_0 ? left_pin : prev_pin;
             wire          col_x   = U_PAR ^ x[0];               // colour of node x
             always @(posedge clk) begin
                 if (take_left) begin
                     left_q   <= u > 0 ? rd_pos_all[(u > 0 ? u - 1 : 0)*DW +: DW] : {DW{1'b0}};
+                    left_pv  <= u > 0 ? rd_prev_all[(u > 0 ? u - 1 : 0)*DW +: DW] : {DW{1'b0}};
                     left_pin <= u > 0 && rd_pin_all[u > 0 ? u - 1 : 0];
                 end
                 if (take_right) begin
                     right_q   <= u < M - 1 ? rd_pos_all[(u < M - 1 ? u + 1 : u)*DW +: DW] : {DW{1'b0}};
+                    right_pv  <= u < M - 1 ? rd_prev_all[(u < M - 1 ? u + 1 : u)*DW +: DW] : {DW{1'b0}};
                     right_pin <= u < M - 1 && rd_pin_all[u < M - 1 ? u + 1 : u];
                 end
                 if (slot) begin
                     prev_q   <= arr;
+                    prev_pv  <= arr_pv;
                     prev_pin <= arr_pin;
                 end
             end
 
             // the operation of slot x
             reg           op_valid, op_down, op_exists, op_pin_a, op_pin_b;
-            reg [DW-1:0]  op_p, op_c;
+            reg [DW-1:0]  op_p, op_c, op_pp, op_pc;  // P, C and their previous positions
             always @* begin
                 op_down   = 1'b0;
                 op_pin_a  = prv_pin;
@@ -198,6 +207,8 @@ module chain_stream #(
                         op_valid  = slot && !at_k;
                         op_p      = prv;
                         op_c      = arr;
+                        op_pp     = prv_pv;
+                        op_pc     = arr_pv;
                         op_exists = !(FIRST && at_0);
                         op_pin_b  = arr_pin;              // the node's pin
                     end else begin                        // down: node x-1 from x
@@ -205,6 +216,8 @@ module chain_stream #(
                         op_down   = 1'b1;
                         op_p      = arr;
                         op_c      = prv;
+                        op_pp     = arr_pv;
+                        op_pc     = prv_pv;
                         op_exists = !(FINAL && at_k);
                         op_pin_b  = prv_pin;
                     end
@@ -212,6 +225,8 @@ module chain_stream #(
                     op_valid  = slot && col_x != colour;
                     op_p      = prv;
                     op_c      = arr;
+                    op_pp     = prv_pv;
+                    op_pc     = arr_pv;
                     op_exists = !(FIRST && at_0) && !(FINAL && at_k);
                 end
             end
@@ -219,11 +234,21 @@ module chain_stream #(
             wire             o_valid, o_ok;
             wire [DW-1:0]    o_t, o_p, o_c;
             wire [TAG_W-1:0] o_tag;
-            toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
-                          .CARRY(RULE == 1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
-                .clk(clk), .reset(reset), .in_valid(op_valid), .in_excess(RULE == 1),
-                .in_p(op_p), .in_c(op_c), .in_rest(rest_len), .in_tag({x, op_down, op_exists, op_pin_a && RULE == 1, op_pin_b}),
-                .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
+            if (PROJECTION) begin : g_previous
+                toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                                   .CARRY(RULE == 1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
+                    .clk(clk), .reset(reset), .in_valid(op_valid), .in_excess(RULE == 1),
+                    .in_p(op_p), .in_c(op_c), .in_pp(op_pp), .in_pc(op_pc), .in_rest(rest_len),
+                    .in_tag({x, op_down, op_exists, op_pin_a && RULE == 1, op_pin_b}),
+                    .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
+            end else begin : g_current
+                toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                              .CARRY(RULE == 1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
+                    .clk(clk), .reset(reset), .in_valid(op_valid), .in_excess(RULE == 1),
+                    .in_p(op_p), .in_c(op_c), .in_rest(rest_len), .in_tag({x, op_down, op_exists, op_pin_a && RULE == 1, op_pin_b}),
+                    .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
+                wire unused_prev = &{1'b0, op_pp, op_pc};
+            end
             wire [XW-1:0] o_x      = o_tag[TAG_W-1 -: XW];
             wire          o_down   = o_tag[3];
             wire          o_exists = o_tag[2];

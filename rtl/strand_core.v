@@ -159,6 +159,7 @@ module strand_core #(
             ) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
                 .rd_idx(c_rd[IW-1:0]), .rd_pos_all(a_pos_all), .rd_pin_all(a_pin_all),
+                .rd_prev_all(PROJECTION ? a_prev_all : {(M*DW){1'b0}}),
                 .wr_en(seq_we), .wr_idx_all(seq_widx), .wr_pos_all(seq_wpos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
             assign c_rd[AW-1:IW] = {UW{1'b0}};

@@ -546,7 +546,9 @@ def projection_section(A, results):
     A("### Projection along the previous direction on long bodies, at equal cycles")
     A("")
     A("`projection = previous` costs cycles: `toward_prev` takes 2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20 cycles a "
-      "correction where `toward` takes SQRT_BITS + DIV_BITS + 2 DIM + 10 (docs/architecture.md), about twice. Each "
+      "correction where `toward` takes SQRT_BITS + DIV_BITS + 2 DIM + 10 (docs/architecture.md), about twice; in the "
+      "pipelined pass only the pipe's fill and drain grows (2 SQRT_BITS + DIV_BITS + 34 against SQRT_BITS + DIV_BITS "
+      "+ 15 a sweep). Each "
       "body below runs both ways over a grid of substeps and iterations (Q16.16; cycles per frame from the RTL "
       "formula, the serial build). Energy change is over the run, as % of the larger of the starting energy and the "
       "largest kinetic energy (the quantity `strand run` prints); stretch is the largest link stretch over the run.")
@@ -985,7 +987,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
                    key=lambda r: r["substeps"])
     if prows:
         A("  With `projection = previous` (SHAKE: each correction along the constraint's direction at the start of "
-          "the substep, docs/model.md; the C model runs it, the RTL does not build it yet) the method no longer loses "
+          "the substep, docs/model.md; the C model and both RTL passes run it, in lockstep in make test) the method no longer loses "
           "energy: over the run the drift is "
           + ", ".join(f"{g(get(r, 'check_fx.error_pct'))} % in Q16.16 and {g(get(r, 'check_dbl.error_pct'))} % in "
                       f"double at {r['substeps']} substeps" for r in prows)

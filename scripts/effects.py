@@ -128,6 +128,10 @@ EFFECTS = [
          scene={"constraints": ["projection = previous"]},
          context=PAIRWISE,
          params={"EN_CONSTRAINTS": 1, "RULE": 1, "PROJECTION": 1}, enable=["PROJECTION"]),
+    dict(name="previous_pipe", title="projection = previous, centred rule, pipelined (PROJECTION 1, ARCH 1: toward_prev_pipe)",
+         scene={"constraints": ["projection = previous"]},
+         context={"constraints": ["rule = centred", "order = redblack"]},
+         params={"EN_CONSTRAINTS": 1, "RULE": 0, "ARCH": 1, "PROJECTION": 1}, enable=["PROJECTION"]),
     dict(name="3d", title="3D (a z lane)",
          scene={"scene": ["dim = 3"]}, replace=chain_3d,
          params={"DIM": 3}),
@@ -718,11 +722,13 @@ def write_doc(o, rows, res, body_name, body):
         w("`projection = previous` (SHAKE, docs/model.md) stores nothing extra: the previous positions it "
           "needs are the ones Verlet keeps, read from port A with the positions (the centred sequencer holds "
           "them in its window of three nodes beside the positions). It replaces `toward` by `toward_prev`, which "
-          "keeps a `toward` for its fallback and adds a multiplier, a root and a divider of its own: "
+          "keeps a `toward` for its fallback and adds a multiplier, a root and a divider of its own (in the "
+          "pipelined pass `toward_prev_pipe` keeps a `toward_pipe` and adds two pipelined roots, DIM pipelined "
+          "unit dividers and 4 DIM + 1 multipliers): "
           + "; ".join(f"{r['title']}: {signed(fig(r, 'S')['cells'] - fig(r, 'B')['cells'])} generic cells and "
                       f"{signed(fig(r, 'S')['cycles'] - fig(r, 'B')['cycles'])} cycles per frame "
                       f"({fig(r, 'S')['cycles'] / fig(r, 'B')['cycles']:.2f}x)" for r in prev)
-          + ". The pipelined pass does not build it.")
+          + ".")
         w("")
     cols = {"cells": "generic cells", "ice_lut": "iCE40 LUT4", "ice_ff": "iCE40 DFF", "ecp_lut": "ECP5 LUT4",
             "ecp_ff": "ECP5 FF", "ecp_dsp": "ECP5 MULT18X18D"}

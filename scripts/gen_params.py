@@ -57,7 +57,7 @@ PARAMS = [
     ("EN_CONSTRAINTS", "1",      "0", "1",    "constraints", "distance constraints (rods, struts, chain links)"),
     ("RULE",           "0",      "0", "1",    "constraints", "their rule: 0 centred (reference 000), 1 pairwise (references 001, 002)"),
     ("ARCH",           "0",      "0", "1",    "constraints", "the constraint and spring passes: 0 serial (one toward / spring_force datapath, node by node or link by link, the order of reference 000), 1 pipelined (every unit streams its nodes through its own toward_pipe in red/black order, and its links through its own spring_force_pipe: one constraint or spring a clock)"),
-    ("PROJECTION",     "0",      "0", "1",    "constraints", "the direction of each correction: 0 the current one (references 000-002), 1 the constraint's direction at the substep's start (projection = previous, SHAKE: toward_prev, serial pass only)"),
+    ("PROJECTION",     "0",      "0", "1",    "constraints", "the direction of each correction: 0 the current one (references 000-002), 1 the constraint's direction at the substep's start (projection = previous, SHAKE: toward_prev, or toward_prev_pipe in the pipelined pass)"),
     ("EN_SPRINGS",     "0",      "0", "1",    "springs",     "damped springs (references 001, 004): a spring pass before each Verlet pass"),
     ("EN_GROUND",      "0",      "0", "1",    "ground",      "ground collision with friction (reference 001)"),
     ("GROUND_AXIS",    "1",      "0", "DIM - 1", "ground",   "the ground's normal axis: 0 x, 1 y, 2 z"),
@@ -105,8 +105,6 @@ CHECKS = [
      "a graph's rods and struts use the pairwise rule (RULE = 1)"),
     ("pipelined_constraints_are_for_chains", "!ARCH || !GRAPH",
      "the pipelined constraint pass (ARCH = 1) streams a chain; a graph's edges take the serial pass, in colour order"),
-    ("previous_projection_is_serial", "!PROJECTION || !ARCH",
-     "projection = previous (PROJECTION = 1) runs in the serial constraint pass (ARCH = 0); the pipelined pass does not build it"),
     ("graph_edge_word_wider_than_W", "!GRAPH || 2 * AW + 1 <= W", "a graph's EDGE word {spring, b, a} must fit W bits"),
     ("node_address_wider_than_W", "AW <= W", "a node address {unit, node} must fit W bits (PIN, NODE writes)"),
 ]
