@@ -554,9 +554,12 @@ def projection_section(A, results):
       "largest kinetic energy (the quantity `strand run` prints); stretch is the largest link stretch over the run.")
     A("")
     for scene, fixed, subs, iters in PROJECTION_GRID:
-        cur = {(r["substeps"], r["iterations"]): r for r in find(results, scene, **fixed) if "error" not in r}
-        prev = {(r["substeps"], r["iterations"]): r for r in find(results, scene, projection="previous", **fixed)
-                if "error" not in r}
+        # the grid's own points: Q16.16 at full precision (the one-knob sweeps share the scene)
+        flt = dict(fixed, width=32, frac=16, sqrt_bits=31, div_bits=31)
+        cur = {(r["substeps"], r["iterations"]): r for r in find(results, scene, **flt) if "error" not in r
+               and r["substeps"] in subs and r["iterations"] in iters}
+        prev = {(r["substeps"], r["iterations"]): r for r in find(results, scene, projection="previous", **flt)
+                if "error" not in r and r["substeps"] in subs and r["iterations"] in iters}
         if not cur or not prev:
             continue
         any_r = next(iter(cur.values()))
