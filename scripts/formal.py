@@ -13,8 +13,8 @@ build/formal/NAME_TASK/. A task prints one line:
 
 --only keeps the tasks whose NAME_TASK matches one of the patterns (fnmatch).
 
-Planted faults (tb/formal/faults.txt, one a line: name | file under rtl/ | text | its
-replacement | NAME_TASK | what the fault is): a copy of rtl/ with the one replacement is
+Planted faults (tb/formal/faults.txt, one a line: name ;; file under rtl/ ;; text ;; its
+replacement ;; NAME:TASK ;; what the fault is): a copy of rtl/ with the one replacement is
 made in build/formal/faults/NAME/ (rtl/ itself is never touched), the task is run on it,
 and it must FAIL:
 
@@ -152,9 +152,9 @@ def read_faults():
     for n, line in enumerate(open(FAULTS), 1):
         if not line.strip() or line.startswith("#"):
             continue
-        parts = [p.strip() for p in line.rstrip("\n").split(" | ")]
+        parts = [p.strip() for p in line.rstrip("\n").split(" ;; ")]
         if len(parts) != 6:
-            sys.exit("%s:%d: expected 'name | file | text | replacement | NAME_TASK | what'" % (FAULTS, n))
+            sys.exit("%s:%d: expected 'name ;; file ;; text ;; replacement ;; NAME:TASK ;; what'" % (FAULTS, n))
         faults.append(parts)
     return faults
 
@@ -242,6 +242,10 @@ def main():
     return 1 if failed else 0
 
 
+def cell(text):
+    return str(text).replace("|", "\\|")
+
+
 def write_doc(doc, rows, frows, total):
     import doc_region
     out = ["Written by `make formal` (scripts/formal.py): every task of tb/formal/*.sby, run with",
@@ -254,14 +258,14 @@ def write_doc(doc, rows, frows, total):
     for stem, task, path, mode, depth, params, status, dt, where in rows:
         what = proves(path) if stem not in seen else "(as above)"
         seen.add(stem)
-        out.append("| %s_%s | %s | %s | %s | %s | %s | %.0f s |" % (stem, task, what, mode, depth, params or "-",
+        out.append("| %s_%s | %s | %s | %s | %s | %s | %.0f s |" % (stem, task, cell(what), mode, depth, params or "-",
                                                                    status, dt))
     if frows:
         out += ["", "Planted faults (tb/formal/faults.txt): a copy of rtl/ with one change, under",
                 "build/formal/faults/; the task named must fail on it.", "",
                 "| fault | change | checked by | result | time |", "| --- | --- | --- | --- | --- |"]
         for name, what, target, status, dt in frows:
-            out.append("| %s | %s | %s | %s | %.0f s |" % (name, what, target,
+            out.append("| %s | %s | %s | %s | %.0f s |" % (name, cell(what), target,
                                                            "caught (FAIL)" if status == "FAIL" else "NOT caught (%s)" % status, dt))
     out += ["", "%d tasks and %d planted faults in %.0f s of wall time (2 at a time, on a 2-core machine)."
             % (len(rows), len(frows), total)]
