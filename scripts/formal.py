@@ -165,6 +165,7 @@ def plant(name, rfile, old, new):
     shutil.rmtree(d, ignore_errors=True)
     shutil.copytree(os.path.join(ROOT, "rtl"), os.path.join(d, "rtl"))
     os.symlink(os.path.join(ROOT, "tb"), os.path.join(d, "tb"))
+    os.symlink(os.path.join(ROOT, "build"), os.path.join(d, "build"))  # build/formal/gen
     target = os.path.join(d, "rtl", rfile)
     text = open(target).read()
     old_u, new_u = old.encode().decode("unicode_escape"), new.encode().decode("unicode_escape")
@@ -187,6 +188,9 @@ def main():
     env = tool_env()
     warm_up(env)
     os.makedirs(BUILD, exist_ok=True)
+    # the parameter header the sequencers include (the .sby files name build/formal/gen/)
+    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "gen_params.py"),
+                    os.path.join(ROOT, "build", "formal", "gen")], check=True, capture_output=True)
     t_start = time.time()
 
     tasks = [] if a.no_tasks else list_tasks(env)
