@@ -191,6 +191,8 @@ def main():
     # the parameter header the sequencers include (the .sby files name build/formal/gen/)
     subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "gen_params.py"),
                     os.path.join(ROOT, "build", "formal", "gen")], check=True, capture_output=True)
+    subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "gen_regs.py"),
+                    os.path.join(ROOT, "build", "formal", "gen")], check=True, capture_output=True)
     t_start = time.time()
 
     tasks = [] if a.no_tasks else list_tasks(env)
