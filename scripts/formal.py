@@ -34,6 +34,7 @@ import fnmatch
 import os
 import re
 import shutil
+import signal
 import subprocess
 import sys
 import time
@@ -124,11 +125,20 @@ def run_task(env, stem, task, path, cwd, prefix, timeout):
     """Run one task; return (status, seconds, trace or log)."""
     t0 = time.time()
     workdir = prefix + "_" + task
+    # its own process group, so that a timeout ends sby and the solvers it started
+    proc = subprocess.Popen(["nice", "-n", "10", os.path.join(VENV, "yowasp-sby"), "-f", "-d", workdir,
+                             os.path.relpath(path, cwd) if path.startswith(cwd) else path, task],
+                            cwd=cwd, env=env, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL,
+                            start_new_session=True)
     try:
-        subprocess.run(["nice", "-n", "10", os.path.join(VENV, "yowasp-sby"), "-f", "-d", workdir,
-                        os.path.relpath(path, cwd) if path.startswith(cwd) else path, task],
-                       cwd=cwd, env=env, capture_output=True, text=True, timeout=timeout)
+        proc.wait(timeout=timeout)
     except subprocess.TimeoutExpired:
+        os.killpg(proc.pid, signal.SIGTERM)
+        try:
+            proc.wait(timeout=10)
+        except subprocess.TimeoutExpired:
+            os.killpg(proc.pid, signal.SIGKILL)
+            proc.wait()
         return "TIMEOUT", time.time() - t0, os.path.join(workdir, "logfile.txt")
     dt = time.time() - t0
     status = "ERROR"

@@ -8,9 +8,11 @@
 //                  LATENCY = SQRT_BITS + DIV_BITS + 15 cycles earlier (since reset: an
 //                  operation a clock, none dropped, none repeated), and out_tag is its tag;
 //                  out_valid low after a reset.
-//   toward_miter   toward_pipe against toward: one operation (P, C, rest, rule held at one
-//                  arbitrary value) into both, any other traffic into the pipe before and
-//                  after it; the pipe's out_t and out_ok for it equal toward's t and valid.
+//   toward_miter   toward_pipe against toward: one operation (P, C, rest, rule: one arbitrary
+//                  value) into both in the second cycle after reset, any other traffic into
+//                  the pipe before and after it; the pipe's out_t and out_ok for it equal
+//                  toward's t and valid. (One start cycle: each compared cycle costs the
+//                  solver minutes, the root, divider and multipliers of both datapaths.)
 `default_nettype none
 
 module toward_hs #(
@@ -93,7 +95,7 @@ module toward_miter #(
     parameter integer W = 8, parameter integer F = 4, parameter integer SQRT_BITS = 1,
     parameter integer DIV_BITS = 1, parameter integer DIM = 2
 ) (
-    input wire clk, input wire reset, input wire go,
+    input wire clk, input wire reset,
     input wire in_valid, input wire in_excess,
     input wire [DIM*W-1:0] in_p, input wire [DIM*W-1:0] in_c, input wire [W-1:0] in_rest
 );
@@ -102,12 +104,14 @@ module toward_miter #(
     (* anyconst *) reg [DIM*W-1:0] op_p, op_c;
     (* anyconst *) reg [W-1:0]     op_rest;
     (* anyconst *) reg             op_excess;
-    reg f_init = 1'b1, fired = 1'b0;
-    always @(posedge clk) f_init <= 1'b0;
-    always @* if (f_init) assume (reset);
-    always @* if (!f_init) assume (!reset);
-    wire start = go && !fired && !f_init;            // the one operation, at a cycle of the solver's choice
-    always @(posedge clk) if (start) fired <= 1'b1;
+    reg f_init = 1'b1;
+    reg [1:0] cyc = 2'd0;                            // cycles since the reset cycle, to 3
+    always @(posedge clk) begin
+        f_init <= 1'b0;
+        if (cyc != 2'd3) cyc <= cyc + 2'd1;
+    end
+    always @* assume (reset == f_init);
+    wire start = cyc == 2'd2;                        // the one operation
 
     wire busy, done, valid, out_valid, out_ok;
     wire [DIM*W-1:0] t, out_t, out_p, out_c;
