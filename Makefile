@@ -40,7 +40,7 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
+.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz formal test-formal \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -71,6 +71,8 @@ help:
 	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"
 	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
 	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
+	@echo "  make formal      every SymbiYosys proof of tb/formal/*.sby and the planted faults -> docs/verification.md"
+	@echo "  make test-formal the quick slice of make formal (part of make test)"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
 	@echo "  make clean       remove $(BUILD)/"
 
@@ -252,7 +254,21 @@ test-docs: $(STRAND)
 	@python3 scripts/doc_tables.py --check docs/architecture.md
 	@python3 tb/doc_claims.py $(STRAND)
 
-TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil \
+# ---- formal properties (SymbiYosys, tb/formal/*.sby; scripts/formal.py) ----
+
+# make formal: every task and every planted fault; rewrites the 'formal' region of docs/verification.md.
+formal: bootstrap
+	@python3 scripts/formal.py --faults --doc docs/verification.md
+
+# make test: a slice of the tasks (the short ones, every kind) and one planted fault of each
+# class of checker (arithmetic, handshake, miter, sequencer, AXI4-Lite, reset): ~1 min.
+FORMAL_QUICK  := fx_sqrt_w8_b3 fx_div_hs_w8_f4_b1 fx_div_w8_f4_b1 fx_mul_w8_f4 pipes_sqrt_w8_b3 pipes_div_w8_f1_b1 \
+                 chain_seq_m1_k3_i1 pair_seq_m1_k3_p1 stream_centred_m2_k2 axil_m1_k1_w8 toward_hs_w8_d2
+FORMAL_FAULTS := sqrt_no_round div_restart_busy sqrt_pipe_big chain_seq_short_pass axil_bvalid_dropped frame_irq_not_reset
+test-formal:
+	@python3 scripts/formal.py $(addprefix --only ,$(FORMAL_QUICK)) --faults $(FORMAL_FAULTS)
+
+TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil test-formal \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap
