@@ -210,6 +210,11 @@ test-scenes: $(STRAND)
 
 test-rtl-frames: $(STRAND) $(GEN_HDRS)
 	@rc=0; for s in $(RTL_SCENES); do for o in serial redblack; do scripts/top_frames.sh $$s "" $$o || rc=1; done; done; exit $$rc
+	@# the bench checks the status as well as the positions: FEC one cycle late (tb/faults.py delay) must fail it
+	@python3 tb/faults.py delay $(BUILD)/faults/frames_delay && \
+	  out=$$(HW_DIR=$(BUILD)/hw/fault scripts/top_frames.sh tb/scenes/chain_q10_8.scene 5 "" $(BUILD)/faults/frames_delay); \
+	  if echo "$$out" | grep -q '^FAIL .*FEC high'; then echo "PASS tb_top_frames catches FEC one cycle late (tb/faults.py delay): $${out#FAIL tb_top_frames }"; \
+	  else echo "$$out"; echo "FAIL tb_top_frames: FEC one cycle late (tb/faults.py delay) was not caught"; fi
 
 # ---- lint ----
 
