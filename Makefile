@@ -37,6 +37,7 @@ override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE)))
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
 .PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz \
+        lockstep-soak mutate \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -49,6 +50,10 @@ help:
 	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=6]  random scenes in lockstep over every build class (N >= 3 x (3 + BUILDS)"
 	@echo "                   covers them all, whatever the seed; the run prints them); a failure prints its seed"
 	@echo "  make lockstep-hard  every hard case the RTL supports, in lockstep (sim/scenes/hard_*.scene)"
+	@echo "  make lockstep-soak [SOAK_SCENES=10000] [SOAK_CHUNK=200]  random scenes in lockstep at scale, in chunks"
+	@echo "                   (each its own seed and builds, every class); resumable; totals -> docs/verification.md"
+	@echo "  make mutate [MUTANTS=120] [MUTATE_SEED=1] [MUTATE_BUDGET=300]  mutants of rtl/ through the fast checks:"
+	@echo "                   the score, by check, and the survivors -> docs/verification.md (30-60 min on 2 cores)"
 	@echo "  make model       build the C model library and the CLI, $(STRAND)"
 	@echo "  make docs-sim    regenerate the picture and summary README.md shows"
 	@echo "  make docs-tables regenerate the tables of docs/architecture.md (registers, parameters, cycle formula)"
@@ -178,6 +183,26 @@ BUILDS ?= 6
 lockstep-fuzz: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
 	@python3 scripts/lockstep_fuzz.py $(N) --seed $(SEED) --builds $(BUILDS)
+
+# Random scenes at scale (long, not in make test): SOAK_SCENES in chunks of SOAK_CHUNK, each chunk
+# a lockstep-fuzz run with its own seed and builds; resumable (build/soak/progress.json); writes
+# the totals into docs/verification.md (region 'fuzz') after every chunk.
+SOAK_SCENES ?= 10000
+SOAK_CHUNK ?= 200
+lockstep-soak: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@nice -n 10 python3 scripts/lockstep_soak.py --scenes $(SOAK_SCENES) --chunk $(SOAK_CHUNK) --jobs $(JOBS) --doc docs/verification.md
+
+# Mutation testing (long, not in make test): MUTANTS mutants of rtl/ (copies in build/mutate/),
+# each through the unit benches, the Icarus frame bench and lockstep on three builds, in a time
+# budget; the score and the survivors go to docs/verification.md (region 'mutate').
+MUTANTS ?= 120
+MUTATE_SEED ?= 1
+MUTATE_BUDGET ?= 300
+mutate: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS) units-vectors
+	@nice -n 10 python3 scripts/mutate.py --mutants $(MUTANTS) --seed $(MUTATE_SEED) --jobs $(JOBS) \
+	  --budget $(MUTATE_BUDGET) --doc docs/verification.md
 
 # ---- C unit tests (cmocka) ----
 

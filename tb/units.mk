@@ -139,7 +139,7 @@ else \
 fi
 endef
 
-.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths
+.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors
 
 test-units: units-icarus units-verilator units-datapaths
 
@@ -210,6 +210,9 @@ units-datapaths: units-run-$(1)
 endef
 
 $(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
+
+# Every configuration's vectors (make mutate runs the benches on mutated copies of the RTL).
+units-vectors: $(foreach t,$(UNITS_ICARUS_TESTS) $(UNITS_DP_TESTS),$(UNITS_BUILD)/$(word 1,$(subst :, ,$(t)))/vectors.hex)
 
 # Verilator exhaustive test at W=12, F=6, full SQRT_BITS/DIV_BITS.
 UNITS_EXH_DIR := $(UNITS_BUILD)/exhaustive_w12
