@@ -108,7 +108,7 @@ def main():
         c = load(cov) or {}
         if rc != 0 and fails == 0:
             fails = max(1, n - passes)   # the chunk stopped before its scenes ran (a harness did not build, ...)
-        entry = {"seed": seed, "scenes": passes + fails, "failed": fails, "builds": c.get("builds", 0) - 3,
+        entry = {"seed": seed, "scenes": passes + fails, "failed": fails, "builds": max(0, c.get("builds", 3) - 3),
                  "covered": c.get("covered", {}), "seconds": round(time.time() - t0), "rc": rc}
         p["chunks"].append(entry)
         failed += fails
