@@ -28,9 +28,12 @@ kill), within --budget seconds (default 300) a mutant:
             on three builds: sim/scenes/ref000_rope.scene (serial chain),
             tb/scenes/graph3d_pin_grab.scene (3D graph) and tb/scenes/chain_grab_3d.scene
             in the red/black order (pipelined 3D chain)
-A mutant no check fails in its budget survives. Results go to build/mutate/results.json;
-a table of the score (killed / counted, by check) and of the survivors to stdout, and
-with --doc FILE into FILE's generated region 'mutate' (scripts/doc_region.py).
+A mutant no check fails in its budget survives. A survivor shown to be equivalent to the
+RTL (no input sequence can tell them apart) is listed in tb/mutate_equivalent.txt with the
+argument, and is not counted; any other survivor fails the run. Results go to
+build/mutate/results.json; a table of the score (killed / counted, by check) and of the
+survivors to stdout, and with --doc FILE into FILE's generated region 'mutate'
+(scripts/doc_region.py). --report writes the table again from results.json.
 """
 import argparse
 import concurrent.futures
@@ -60,6 +63,26 @@ LOCKSTEP = [("tb/scenes/graph3d_pin_grab.scene", ""), ("tb/scenes/chain_grab_3d.
 LOCKSTEP_FIRST = {"chain_stream.v": 1, "toward_pipe.v": 1, "fx_mul_pipe.v": 1, "fx_sqrt_pipe.v": 1, "fx_div_pipe.v": 1,
                   "delay_line.v": 1, "chain_sequencer.v": 2, "toward.v": 2}
 CHECKS = ["compile", "units", "frames", "lockstep"]
+EQUIV_FILE = os.path.join(ROOT, "tb", "mutate_equivalent.txt")
+
+
+def equivalents():
+    """tb/mutate_equivalent.txt: 'FILE:LINE:COL OLD -> NEW  # why it is equivalent' per mutant."""
+    out = {}
+    if not os.path.exists(EQUIV_FILE):
+        return out
+    for n, line in enumerate(open(EQUIV_FILE), 1):
+        if not line.strip() or line.startswith("#"):
+            continue
+        m = re.match(r"^(\S+):(\d+):(\d+)\s+(.+?)\s+->\s+(.+?)\s+#\s*(.+)$", line.rstrip("\n"))
+        if not m:
+            raise SystemExit(f"{EQUIV_FILE}:{n}: expected 'FILE:LINE:COL OLD -> NEW  # why'")
+        out[(m.group(1), int(m.group(2)), int(m.group(3)), m.group(4), m.group(5))] = m.group(6)
+    return out
+
+
+def equivalence(r, eq):
+    return eq.get((r["file"], r["line"], r["col"], r["old"].strip(), r["new"].strip()))
 
 
 # ---- the sites ----
@@ -416,10 +439,12 @@ def one(site, budget):
 # ---- the report ----
 
 def table(results, args):
-    counted = [r for r in results if r["status"] != "stillborn"]
+    eq = equivalents()
+    equiv = [r for r in results if r["status"] == "survived" and equivalence(r, eq)]
+    counted = [r for r in results if r["status"] != "stillborn" and r not in equiv]
     killed = [r for r in counted if r["status"] == "killed"]
-    lines = [f"{len(results)} mutants of rtl/ (seed {args.seed}; `make mutate MUTANTS={args.mutants}`), "
-             f"{len(results) - len(counted)} stillborn (do not compile) and not counted.", "",
+    lines = [f"{len(results)} mutants of rtl/ (seed {args.seed}; `make mutate MUTANTS={args.mutants}`): "
+             f"{len(results) - len(counted) - len(equiv)} stillborn (do not compile) and {len(equiv)} equivalent, not counted.", "",
              f"**Score: {len(killed)} of {len(counted)} killed"
              + (f" ({100 * len(killed) / len(counted):.1f} %)**" if counted else "**"), "",
              "| kind | mutants | killed | by compile | by units | by frames | by lockstep | survived |", "|---|---|---|---|---|---|---|---|"]
@@ -429,6 +454,12 @@ def table(results, args):
         k = sum(1 for r in rs if r["status"] == "killed")
         lines.append(f"| {kind} | {len(rs)} | {k} | {by('compile')} | {by('units')} | {by('frames')} | {by('lockstep')} | {len(rs) - k} |")
     surv = [r for r in counted if r["status"] == "survived"]
+    if equiv:
+        lines += ["", f"Equivalent survivors ({len(equiv)}; the arguments are in tb/mutate_equivalent.txt):", "",
+                  "| mutant | site | edit | why no check can kill it |", "|---|---|---|---|"]
+        for r in sorted(equiv, key=lambda r: (r["file"], r["line"])):
+            lines.append(f"| {r['id']} | rtl/{r['file']}:{r['line']} | `{r['old'].strip()}` -> `{r['new'].strip()}` | "
+                         f"{equivalence(r, eq)} |")
     unfinished = sum(1 for r in surv if r.get("unfinished"))
     lines += ["", (f"Survivors ({len(surv)}; {unfinished} of them only because the budget ran out before every check ran):"
                    if unfinished else f"Survivors ({len(surv)}):") if surv else "No survivors."]
@@ -438,7 +469,8 @@ def table(results, args):
             lines.append(f"| {r['id']} | rtl/{r['file']}:{r['line']} | `{r['old'].strip()}` -> `{r['new'].strip()}` | "
                          f"{r['detail']} |")
     secs = sum(r["seconds"] for r in results)
-    lines += ["", f"CPU time in the checks: {secs / 60:.0f} min over {args.jobs} jobs (budget {args.budget} s a mutant)."]
+    lines += ["", f"Time in the checks: {secs / 60:.0f} min summed over the mutants, {args.jobs} at a time "
+              f"(budget {args.budget} s a mutant)" + (f"; the run took {args.wall / 60:.0f} min." if getattr(args, "wall", 0) else ".")]
     return "\n".join(lines) + "\n"
 
 
@@ -451,44 +483,59 @@ def main():
     ap.add_argument("--only", help="run these mutants (site numbers, m0042 or 42, comma-separated)")
     ap.add_argument("--list", action="store_true", help="print every site and exit")
     ap.add_argument("--doc", help="write the table into this file's region 'mutate'")
+    ap.add_argument("--report", action="store_true", help="write the table from build/mutate/results.json, run nothing")
     a = ap.parse_args()
+    a.wall = 0
     sites = all_sites()
     if a.list:
         for s in sites:
             print(f"m{s['site']:04d} {s['kind']:6} rtl/{s['file']}:{s['line']}: {s['old'].strip()!r} -> {s['new'].strip()!r}")
         print(f"{len(sites)} sites")
         return 0
-    if a.only:
-        ids = {int(x.strip().lstrip("m")) for x in a.only.split(",")}
-        chosen = [s for s in sites if s["site"] in ids]
-    else:
-        chosen = draw(sites, a.mutants, a.seed)
-    os.makedirs(OUT, exist_ok=True)
-    print(f"mutate: {len(chosen)} of {len(sites)} sites, {a.jobs} jobs, {a.budget} s a mutant", flush=True)
-    results = []
     done_path = os.path.join(OUT, "results.json")
-    with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for i, r in enumerate(ex.map(lambda s: one(s, a.budget), chosen)):
-            results.append(r)
-            what = {"killed": f"killed by {r['by']}", "survived": "SURVIVED", "stillborn": "stillborn"}[r["status"]]
-            print(f"[{i + 1}/{len(chosen)}] {r['id']} {r['kind']:6} rtl/{r['file']}:{r['line']} "
-                  f"{r['old'].strip()!r} -> {r['new'].strip()!r}: {what} ({r['seconds']} s) {r['detail']}", flush=True)
-            with open(done_path, "w") as fh:
-                json.dump(results, fh, indent=1)
+    if a.report:
+        saved = json.load(open(done_path))
+        if isinstance(saved, list):   # the results alone: the run's settings are the arguments'
+            saved = {"mutants": len(saved), "seed": a.seed, "jobs": a.jobs, "budget": a.budget, "results": saved}
+        results, a.mutants, a.seed, a.jobs, a.budget, a.wall = (saved["results"], saved["mutants"], saved["seed"],
+                                                                saved["jobs"], saved["budget"], saved.get("wall", 0))
+    else:
+        if a.only:
+            ids = {int(x.strip().lstrip("m")) for x in a.only.split(",")}
+            chosen = [s for s in sites if s["site"] in ids]
+        else:
+            chosen = draw(sites, a.mutants, a.seed)
+        os.makedirs(OUT, exist_ok=True)
+        print(f"mutate: {len(chosen)} of {len(sites)} sites, {a.jobs} jobs, {a.budget} s a mutant", flush=True)
+        results = []
+        t0 = time.time()
+        with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
+            for i, r in enumerate(ex.map(lambda s: one(s, a.budget), chosen)):
+                results.append(r)
+                what = {"killed": f"killed by {r['by']}", "survived": "SURVIVED", "stillborn": "stillborn"}[r["status"]]
+                print(f"[{i + 1}/{len(chosen)}] {r['id']} {r['kind']:6} rtl/{r['file']}:{r['line']}:{r['col']} "
+                      f"{r['old'].strip()!r} -> {r['new'].strip()!r}: {what} ({r['seconds']} s) {r['detail']}", flush=True)
+                a.wall = time.time() - t0
+                if not a.only:
+                    with open(done_path, "w") as fh:
+                        json.dump({"mutants": a.mutants, "seed": a.seed, "jobs": a.jobs, "budget": a.budget, "wall": a.wall,
+                                   "results": results}, fh, indent=1)
     text = table(results, a)
     print(text)
     with open(os.path.join(OUT, "table.md"), "w") as fh:
         fh.write(text)
-    if a.doc and not a.only:
+    if a.doc and not a.only and len(results) == a.mutants:
         p = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "doc_region.py"), a.doc, "mutate"], input=text,
                            text=True, cwd=ROOT)
         if p.returncode:
             return p.returncode
-    counted = [r for r in results if r["status"] != "stillborn"]
+    eq = equivalents()
+    counted = [r for r in results if r["status"] != "stillborn" and not (r["status"] == "survived" and equivalence(r, eq))]
     surv = [r for r in counted if r["status"] == "survived"]
     print(f"{'PASS' if not surv else 'FAIL'} mutate: {len(counted) - len(surv)} of {len(counted)} mutants killed"
-          + (f", {len(surv)} survived: {', '.join(r['id'] for r in surv)}" if surv else ""))
-    return 0
+          + (f", {len(surv)} survived (neither killed nor in tb/mutate_equivalent.txt): {', '.join(r['id'] for r in surv)}"
+             if surv else ""))
+    return 1 if surv else 0
 
 
 if __name__ == "__main__":
