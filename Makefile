@@ -199,10 +199,11 @@ lockstep-soak: bootstrap
 MUTANTS ?= 120
 MUTATE_SEED ?= 1
 MUTATE_BUDGET ?= 300
+# MUTATE_ARGS=--resume: keep the results of a stopped run (same seed) and run the rest
 mutate: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS) units-vectors
 	@nice -n 10 python3 scripts/mutate.py --mutants $(MUTANTS) --seed $(MUTATE_SEED) --jobs $(JOBS) \
-	  --budget $(MUTATE_BUDGET) --doc docs/verification.md
+	  --budget $(MUTATE_BUDGET) --doc docs/verification.md $(MUTATE_ARGS)
 
 # ---- C unit tests (cmocka) ----
 

@@ -33,7 +33,9 @@ RTL (no input sequence can tell them apart) is listed in tb/mutate_equivalent.tx
 argument, and is not counted; any other survivor fails the run. Results go to
 build/mutate/results.json; a table of the score (killed / counted, by check) and of the
 survivors to stdout, and with --doc FILE into FILE's generated region 'mutate'
-(scripts/doc_region.py). --report writes the table again from results.json.
+(scripts/doc_region.py). --report writes the table again from results.json; --resume keeps
+the results of a stopped run (same seed, same sites) and runs only the mutants it had not
+finished (the checks must not have changed in between).
 """
 import argparse
 import concurrent.futures
@@ -484,6 +486,7 @@ def main():
     ap.add_argument("--list", action="store_true", help="print every site and exit")
     ap.add_argument("--doc", help="write the table into this file's region 'mutate'")
     ap.add_argument("--report", action="store_true", help="write the table from build/mutate/results.json, run nothing")
+    ap.add_argument("--resume", action="store_true", help="keep a stopped run's results and run the other mutants")
     a = ap.parse_args()
     a.wall = 0
     sites = all_sites()
@@ -506,11 +509,21 @@ def main():
         else:
             chosen = draw(sites, a.mutants, a.seed)
         os.makedirs(OUT, exist_ok=True)
-        print(f"mutate: {len(chosen)} of {len(sites)} sites, {a.jobs} jobs, {a.budget} s a mutant", flush=True)
-        results = []
-        t0 = time.time()
+        key = lambda r: (r["file"], r["line"], r["col"], r["old"], r["new"])
+        results, wall0 = [], 0
+        if a.resume and os.path.exists(done_path):
+            saved = json.load(open(done_path))
+            if isinstance(saved, dict) and saved.get("seed") == a.seed:
+                want = {key(s) for s in chosen}
+                results = [r for r in saved["results"] if key(r) in want]
+                wall0 = saved.get("wall", 0)
+        have = {key(r) for r in results}
+        todo = [s for s in chosen if key(s) not in have]
+        print(f"mutate: {len(chosen)} of {len(sites)} sites, {a.jobs} jobs, {a.budget} s a mutant"
+              + (f"; {len(results)} kept from the stopped run" if results else ""), flush=True)
+        t0 = time.time() - wall0
         with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-            for i, r in enumerate(ex.map(lambda s: one(s, a.budget), chosen)):
+            for i, r in enumerate(ex.map(lambda s: one(s, a.budget), todo), len(results)):
                 results.append(r)
                 what = {"killed": f"killed by {r['by']}", "survived": "SURVIVED", "stillborn": "stillborn"}[r["status"]]
                 print(f"[{i + 1}/{len(chosen)}] {r['id']} {r['kind']:6} rtl/{r['file']}:{r['line']}:{r['col']} "
