@@ -272,13 +272,16 @@ def apply(site, rtl_out):
 
 # ---- the checks ----
 
+BUDGET_SPENT = -1000   # run()'s status when the mutant's budget ran out: not a kill
+
+
 def run(cmd, timeout, cwd=ROOT, env=None):
     try:
         p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout,
                            env=env)
         return p.returncode, p.stdout
-    except subprocess.TimeoutExpired as e:
-        return 124, (e.stdout or b"").decode(errors="replace") if isinstance(e.stdout, bytes) else (e.stdout or "")
+    except subprocess.TimeoutExpired:
+        return BUDGET_SPENT, ""
 
 
 def units_configs():
@@ -341,12 +344,16 @@ def check_units(site, rtl, work, deadline):
         srcs = [os.path.join(rtl, x) for x in files + (DP_COMMON if len(parts) == 7 else []) if os.path.exists(os.path.join(rtl, x))]
         rc, out = run(["iverilog", "-g2005", "-I", rtl, "-o", vvp] + params + [tb] + sorted(set(srcs)),
                       max(1, deadline - time.time()))
+        if rc == BUDGET_SPENT:
+            return None
         if rc != 0:
             return True, f"{name}: does not compile"
         args = ["vvp", "-n", vvp, f"+vectors={vec}", f"+n={open(vec + '.n').read().strip()}", f"+name={name}"]
         if os.path.exists(vec + ".latency"):
             args.append(f"+latency={open(vec + '.latency').read().strip()}")
         rc, out = run(args, max(1, deadline - time.time()))
+        if rc == BUDGET_SPENT:
+            return None
         if rc != 0 or "PASS" not in out:
             line = next((l for l in out.splitlines() if l.startswith("FAIL")), f"exit {rc}")
             return True, line[:200]
@@ -363,6 +370,8 @@ def check_frames(site, rtl, work, deadline):
             rc, out = run(["scripts/top_frames.sh", os.path.relpath(scene, ROOT), "20", order, rtl],
                           max(1, deadline - time.time()), env=env)
             n += 1
+            if rc == BUDGET_SPENT:
+                return None
             if rc != 0:
                 line = next((l for l in out.splitlines() if l.startswith("FAIL")), f"exit {rc}")
                 return True, line[:200]
@@ -378,14 +387,14 @@ def check_lockstep(site, rtl, work, deadline):
         hdir = os.path.join(work, "vl", os.path.basename(scene).replace(".scene", "") + (f"_{order}" if order else ""))
         rc, out = run(["scripts/build_harness.sh", scene, hdir, rtl] + ([order] if order else []), max(1, deadline - time.time()),
                       env=env)
-        if rc == 124 or time.time() > deadline:
+        if rc == BUDGET_SPENT or time.time() > deadline:
             return None
-        if rc != 0:
-            return True, f"{scene}: Verilator does not build it"
+        if rc != 0:   # iverilog took it, Verilator refuses it: make lint would fail too
+            return True, f"Verilator refuses it ({scene}'s build): make lint would fail", "compile"
         for seed, extra in ((1, []), (2, ["--resets", "2"])):
             rc, out = run([os.path.join(hdir, "harness"), os.path.join(ROOT, scene), "--quiet", "--frames", "40", "--seed",
                            str(seed)] + extra + (["--order", order] if order else []), max(1, deadline - time.time()), cwd=work)
-            if rc == 124:
+            if rc == BUDGET_SPENT:
                 return None
             if rc == 2:   # the harness's usage or input error: no mutant does that
                 raise SystemExit(f"mutate.py: the harness refused its arguments: {out.strip()[:300]}")
@@ -427,9 +436,9 @@ def one(site, budget):
                     break
                 continue
             res["ran"].append(name)
-            killed, detail = r
+            killed, detail = r[:2]
             if killed:
-                res.update(status="killed", by=name, detail=detail)
+                res.update(status="killed", by=r[2] if len(r) > 2 else name, detail=detail)
                 break
             res["detail"] = detail
     res["seconds"] = round(time.time() - t0, 1)
