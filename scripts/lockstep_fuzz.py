@@ -544,6 +544,7 @@ def main():
         if a.coverage_json:
             with open(a.coverage_json, "w") as fh:
                 json.dump({"seed": a.seed, "scenes": len(seeds), "builds": len(builds), "fewest": fewest,
+                           "harnesses": [harness_dir(b["params"]) for b in builds],
                            "covered": covered, "classes": CLASSES, "plans": [b["plan"] for b in builds],
                            "failed": failed}, fh, indent=1)
     if digests:

@@ -8,7 +8,8 @@ C scenes on them, so every chunk covers every build class and the soak as a whol
 N / C x B builds. Progress is kept in build/soak/progress.json after every chunk; a run
 that is stopped goes on from the next chunk when started again (--restart forgets it).
 Each chunk's log is build/soak/chunk_<seed>.log; a failing scene's replay command is in it.
-A chunk's drawn harnesses are removed when it ends (about 30 MB each; the fixed builds' stay).
+A chunk's own harnesses (those of its drawn builds that were not there before it) are
+removed when it ends (about 30 MB each); nothing else in build/vl is touched.
 
 With --doc FILE the soak's totals (scenes, chunks, builds, failures, and how many scenes
 covered each class) are written into FILE's generated region 'fuzz' (scripts/doc_region.py)
@@ -87,7 +88,6 @@ def main():
         p = {"plan": want, "chunks": []}
     n_chunks = (a.scenes + a.chunk - 1) // a.chunk
     done = {c["seed"] for c in p["chunks"]}
-    fixed_dirs = None
     failed = sum(c["failed"] for c in p["chunks"])
     for k in range(n_chunks):
         seed = a.first_seed + k
@@ -115,13 +115,19 @@ def main():
         with open(prog_path + ".tmp", "w") as fh:
             json.dump(p, fh, indent=1)
         os.replace(prog_path + ".tmp", prog_path)
-        # the chunk's own harnesses go (the fixed builds' were there before, or are the first chunk's)
-        if fixed_dirs is None:
-            fixed_dirs = before | {"b_" + lockstep_fuzz.build_key(lockstep_fuzz.read_build(s)) + sfx
-                                   for s in lockstep_fuzz.FIXED_BUILDS for sfx in ("", ".gen", ".lock")}
-        for d in set(os.listdir(VL)) - fixed_dirs:
-            path = os.path.join(VL, d)
-            shutil.rmtree(path, ignore_errors=True) if os.path.isdir(path) else os.remove(path)
+        # the chunk's own harnesses go: its builds' (from its coverage file) that were not there
+        # before it, and not the fixed builds' (other runs may share build/vl)
+        fixed = {os.path.basename(lockstep_fuzz.harness_dir(lockstep_fuzz.read_build(s))) for s in lockstep_fuzz.FIXED_BUILDS}
+        for h in c.get("harnesses", []):
+            name = os.path.basename(h)
+            if name in before or name in fixed:
+                continue
+            for sfx in ("", ".gen", ".lock"):
+                path = os.path.join(VL, name + sfx)
+                if os.path.isdir(path):
+                    shutil.rmtree(path, ignore_errors=True)
+                elif os.path.exists(path):
+                    os.remove(path)
         ran = sum(x["scenes"] for x in p["chunks"])
         print(f"lockstep-soak: chunk {k + 1} of {n_chunks} (seed {seed}): {passes + fails} scenes, {fails} failed, "
               f"{entry['seconds']} s; {ran} of {a.scenes} scenes done, {failed} failed so far", flush=True)
