@@ -41,6 +41,7 @@ override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE)))
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
 .PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz formal test-formal \
+        lockstep-soak mutate \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -50,8 +51,13 @@ help:
 	@echo "  make sim [SCENE=...] [WAVES=1] [ORDER=redblack]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/); ORDER=redblack: a chain's pipelined passes"
 	@echo "  make wave [SCENE=...]  run make sim with WAVES=1 and open GTKWave on the trace"
 	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
-	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=4]  random scenes in lockstep; a failure prints its seed"
+	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=6]  random scenes in lockstep over every build class (N >= 3 x (3 + BUILDS)"
+	@echo "                   covers them all, whatever the seed; the run prints them); a failure prints its seed"
 	@echo "  make lockstep-hard  every hard case the RTL supports, in lockstep (sim/scenes/hard_*.scene)"
+	@echo "  make lockstep-soak [SOAK_SCENES=10000] [SOAK_CHUNK=200]  random scenes in lockstep at scale, in chunks"
+	@echo "                   (each its own seed and builds, every class); resumable; totals -> docs/verification.md"
+	@echo "  make mutate [MUTANTS=120] [MUTATE_SEED=1] [MUTATE_BUDGET=300]  mutants of rtl/ through the fast checks:"
+	@echo "                   the score, by check, and the survivors -> docs/verification.md (30-60 min on 2 cores)"
 	@echo "  make model       build the C model library and the CLI, $(STRAND)"
 	@echo "  make docs-sim    regenerate the picture and summary README.md shows"
 	@echo "  make docs-tables regenerate the tables of docs/architecture.md (registers, parameters, cycle formula)"
@@ -168,9 +174,10 @@ HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 
             hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
 
 # make test: the RTL and reference scenes (each also in the red/black order: a chain's pipelined
-# build), the planted faults, random initial values, 50 random scenes
+# build), the planted faults, random initial values, 50 random scenes on the fixed and the
+# planned builds (scripts/lockstep_fuzz.py: they cover every build class, whatever the seed)
 test-lockstep: $(STRAND) $(GEN_HDRS)
-	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 2 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3
+	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 6 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
 
 lockstep-hard: bootstrap
@@ -179,10 +186,31 @@ lockstep-hard: bootstrap
 
 N ?= 200
 SEED ?= 1
-BUILDS ?= 4
+BUILDS ?= 6
 lockstep-fuzz: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
 	@python3 scripts/lockstep_fuzz.py $(N) --seed $(SEED) --builds $(BUILDS)
+
+# Random scenes at scale (long, not in make test): SOAK_SCENES in chunks of SOAK_CHUNK, each chunk
+# a lockstep-fuzz run with its own seed and builds; resumable (build/soak/progress.json); writes
+# the totals into docs/verification.md (region 'fuzz') after every chunk.
+SOAK_SCENES ?= 10000
+SOAK_CHUNK ?= 200
+lockstep-soak: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@nice -n 10 python3 scripts/lockstep_soak.py --scenes $(SOAK_SCENES) --chunk $(SOAK_CHUNK) --jobs $(JOBS) --doc docs/verification.md
+
+# Mutation testing (long, not in make test): MUTANTS mutants of rtl/ (copies in build/mutate/),
+# each through the unit benches, the Icarus frame bench and lockstep on three builds, in a time
+# budget; the score and the survivors go to docs/verification.md (region 'mutate').
+MUTANTS ?= 120
+MUTATE_SEED ?= 1
+MUTATE_BUDGET ?= 300
+# MUTATE_ARGS=--resume: keep the results of a stopped run (same seed) and run the rest
+mutate: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS) units-vectors
+	@nice -n 10 python3 scripts/mutate.py --mutants $(MUTANTS) --seed $(MUTATE_SEED) --jobs $(JOBS) \
+	  --budget $(MUTATE_BUDGET) --doc docs/verification.md $(MUTATE_ARGS)
 
 # ---- C unit tests (cmocka) ----
 
@@ -217,6 +245,11 @@ test-rtl-frames: $(STRAND) $(GEN_HDRS)
 	@rc=0; for s in $(RTL_SCENES); do for o in serial redblack; do scripts/top_frames.sh $$s "" $$o || rc=1; done; done; \
 	for s in $(PREV_FRAMES); do for o in serial redblack; do \
 	  scripts/top_frames.sh tb/scenes/previous/$${s%%:*}.scene $${s##*:} $$o || rc=1; done; done; exit $$rc
+	@# the bench checks the status as well as the positions: FEC one cycle late (tb/faults.py delay) must fail it
+	@python3 tb/faults.py delay $(BUILD)/faults/frames_delay && \
+	  out=$$(HW_DIR=$(BUILD)/hw/fault scripts/top_frames.sh tb/scenes/chain_q10_8.scene 5 "" $(BUILD)/faults/frames_delay); \
+	  if echo "$$out" | grep -q '^FAIL .*FEC high'; then echo "PASS tb_top_frames catches FEC one cycle late (tb/faults.py delay): $${out#FAIL tb_top_frames }"; \
+	  else echo "$$out"; echo "FAIL tb_top_frames: FEC one cycle late (tb/faults.py delay) was not caught"; fi
 
 # ---- lint ----
 

@@ -8,6 +8,7 @@
 #include <string.h>
 #include <sys/stat.h>
 
+#include "cycle.h"
 #include "strand_regs.h"
 
 static const char *reject(const scene *sc, const char *section, char *err, size_t len, const char *what)
@@ -195,6 +196,75 @@ static FILE *open_in(const char *dir, const char *name, char *err, size_t len)
     return f;
 }
 
+/* One step of the status signature (FNV-1a's prime), the same 32-bit arithmetic as tb/tb_top_frames.v. */
+static uint32_t status_mix(uint32_t h, uint32_t v) { return (h ^ v) * 16777619u; }
+
+/*
+ * status.hex: what strand_core's status shows in every frame, from the cycle model (model/cycle.c)
+ * driven as tb/tb_top_frames.v drives the RTL: reset for three edges, one setup write an edge, idle
+ * until the setup ends, then per frame the mouse and one step edge, and edges until frame_done. Per
+ * frame, counted over the cycles from the step edge to the one frame_done shows in (the bench's
+ * cycle count): the cycles FV is high, the cycles FEC is high, the first cycle FEC is high (0 for
+ * none), and a signature of {phase, fv, fec, busy, irq, frame_done, uidx, nidx, counter} in every
+ * one of those cycles.
+ */
+static bool write_status(FILE *f, const scene *sc, const hw_params *hp, const hw_write *writes, int nw, int frames)
+{
+    cyc_model *c = malloc(sizeof *c);
+    cyc_inputs in = {0};
+    cyc_outputs *o = malloc(sizeof *o);
+    bool ok = c && o && cyc_init(c, hp);
+    if (!ok) {
+        free(c);
+        free(o);
+        return false;
+    }
+    in.reset = true;
+    for (int i = 0; i < 3; i++) cyc_edge(c, &in);
+    in.reset = false;
+    for (int i = 0; i < nw; i++) {
+        in.cfg_we = true;
+        in.cfg_addr = (uint32_t)writes[i].addr;
+        in.cfg_data = writes[i].data;
+        cyc_edge(c, &in);
+    }
+    in.cfg_we = false;
+    do cyc_edge(c, &in);
+    while (c->phase != PH_IDLE);
+    for (int fr = 0; fr < frames && ok; fr++) {
+        double m[3];
+        bool down;
+        uint32_t fv = 0, fec = 0, fec_first = 0, sig = 2166136261u;
+        long cycles = 0, limit = 4 * hw_cycles_per_frame(hp);
+        scene_mouse_at(sc, fr, m, &down);
+        in.mouse_down = sc->en_mouse && down;
+        in.mouse_x = hw_word(&sc->fmt, fx_from_double(&sc->fmt, m[0]));
+        in.mouse_y = hw_word(&sc->fmt, fx_from_double(&sc->fmt, m[1]));
+        in.mouse_z = hp->dim == 3 ? hw_word(&sc->fmt, fx_from_double(&sc->fmt, m[2])) : 0u;
+        in.step = true;
+        do {
+            cyc_edge(c, &in);
+            in.step = false;
+            cycles++;
+            cyc_get_outputs(c, o);
+            fv += o->fv;
+            fec += o->fec;
+            if (o->fec && !fec_first) fec_first = (uint32_t)cycles;
+            sig = status_mix(sig, (uint32_t)o->phase);
+            sig = status_mix(sig, (uint32_t)o->fv << 4 | (uint32_t)o->fec << 3 | (uint32_t)o->busy << 2 |
+                                      (uint32_t)o->irq << 1 | (uint32_t)o->frame_done);
+            sig = status_mix(sig, o->uidx);
+            sig = status_mix(sig, o->nidx);
+            sig = status_mix(sig, o->counter);
+        } while (!o->frame_done && cycles < limit);
+        ok = o->frame_done && fprintf(f, "%08x %08x %08x %08x\n", (unsigned)fv, (unsigned)fec, (unsigned)fec_first, (unsigned)sig) > 0;
+    }
+    cyc_free(c);
+    free(c);
+    free(o);
+    return ok;
+}
+
 bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t len)
 {
     hw_params hp;
@@ -261,6 +331,11 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
                         (unsigned)hw_word(&s.fmt, s.pos[i][2]));
         }
         ok = fclose(f) == 0;
+    } else ok = false;
+    if (ok && (f = open_in(dir, "status.hex", err, len))) { /* per frame: FV cycles, FEC cycles, first FEC, signature */
+        bool done = write_status(f, sc, &hp, writes, nw, frames);
+        ok = fclose(f) == 0 && done;
+        if (!done) snprintf(err, len, "%s:1: the cycle model did not finish a frame (or out of memory)", sc->path);
     } else ok = false;
     sim_fx_free(&s);
     return ok;

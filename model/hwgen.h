@@ -43,7 +43,9 @@ uint32_t hw_word(const fx_format *fmt, fx_t v);
 uint32_t hw_node_addr(const hw_params *hp, int node);
 
 /*
- * Write DIR/params.vh, DIR/config.hex, DIR/mouse.hex and DIR/expected.hex for
+ * Write DIR/params.vh, DIR/config.hex, DIR/mouse.hex, DIR/expected.hex (positions from
+ * the frame engine) and DIR/status.hex (per frame: the FV and FEC cycles, the first FEC
+ * cycle and a signature of the status in every cycle, from the cycle model) for
  * `frames` frames. Returns false with a message in err.
  */
 bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t len);

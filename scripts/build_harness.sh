@@ -7,7 +7,8 @@
 # rtl/) is where the RTL comes from: a copy with a planted fault (tb/faults.py) is
 # built the same way. ORDER (serial or redblack) replaces the scene's constraint order
 # (redblack: a chain's pipelined build). The binary is OUTDIR/harness; an unchanged build
-# is not rebuilt.
+# is not rebuilt. HARNESS_OPT=fast compiles the C++ without optimisation (a build that
+# runs only a few frames, such as make mutate's: about half the compile time).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=$1 out=$2 rtl=${3:-rtl} order=${4:-}
@@ -21,7 +22,8 @@ exec 9>"$out.lock"
 flock 9
 "$build/strand" hwgen "$scene" "$out.gen" --frames 1 ${order:+--order "$order"} >/dev/null
 # rebuild only when the build parameters or a source changed
-stamp="$(grep -v Generated "$out.gen/params.vh") $rtl $(cat "$rtl"/*.v "$rtl"/*.vh "$build"/gen/*.vh tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
+opt=${HARNESS_OPT:-}
+stamp="$(grep -v Generated "$out.gen/params.vh") $rtl $opt $(cat "$rtl"/*.v "$rtl"/*.vh "$build"/gen/*.vh tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
 if [ -x "$out/harness" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$stamp" ]; then exit 0; fi
 cp "$out.gen/params.vh" "$out.gen/params.h" "$out/"
 rm -rf "$out/obj"
@@ -32,10 +34,16 @@ if command -v ccache >/dev/null 2>&1; then
   export CCACHE_DIR="$root/$build/ccache" CCACHE_BASEDIR="$root"
   objcache=(-MAKEFLAGS "OBJCACHE=ccache")
 fi
-verilator --cc --exe --build -j 2 -O3 --trace-fst --x-assign unique --x-initial unique "${objcache[@]}" \
+optflags=(-O3)
+cxxopt=-O2
+if [ "$opt" = fast ]; then
+  optflags=(-O3 -MAKEFLAGS "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0")
+  cxxopt=-O0
+fi
+verilator --cc --exe --build -j 2 "${optflags[@]}" --trace-fst --x-assign unique --x-initial unique "${objcache[@]}" \
   -Mdir "$out/obj" --top-module sim_top -o "$out/harness" \
   -I"$root/$build/gen" -I"$out" -I"$rtl" \
-  -CFLAGS "-O2 -I$root/model -I$root/$build/gen -I$out $(pkg-config --cflags inih cairo)" \
+  -CFLAGS "$cxxopt -I$root/model -I$root/$build/gen -I$out $(pkg-config --cflags inih cairo)" \
   -LDFLAGS "$root/$build/libstrand.a $(pkg-config --libs inih cairo) -lm" \
   "$root/tb/sim_top.v" $(for f in "$rtl"/*.v; do echo "$f"; done) "$root/tb/harness.cpp" >"$out/build.log" 2>&1 \
   || { cat "$out/build.log"; exit 1; }

@@ -3,7 +3,7 @@
  * and for the datapaths toward and spring_force, computed by the frame engine.
  *
  * usage: gen_vectors UNIT MODE W F BITS OUT.hex
- *        gen_vectors UNIT random W F SQRT_BITS DIV_BITS OUT.hex   (toward, spring)
+ *        gen_vectors UNIT random W F SQRT_BITS DIV_BITS [DIM] OUT.hex   (toward, spring; DIM 2 or 3, default 2)
  *   UNIT  add | mul | avg | sqrt | div, and, when built with -DGEN_DATAPATHS (linked
  *         with model/engine_fixed.c, model/scene.c and libinih), toward | toward_pipe
  *         (the same vectors; its latency file is toward_pipe.v's) | spring | spring_pipe (likewise)
@@ -23,10 +23,11 @@
  *     avg   flags 0                 a, b, y     y = fx_avg(a, b) (= fx_half(a) when b = 0)
  *     sqrt  flags {0, 0, 0, sat}    rad, y      y = fx_sqrt(rad)
  *     div   flags {0, 0, sat, dbz}  num, den, y y = fx_div(num, den)
- *     toward flags {0, 0, excess, valid}  p_x, p_y, c_x, c_y, rest, t_x, t_y
- *     spring flags {0, 0, 0, valid}  a_x, a_y, a_px, a_py, b_x, b_y, b_px, b_py,
- *                                    rest, ks, kd, f_x, f_y
+ *     toward flags {0, 0, excess, valid}  p_x, p_y, p_z, c_x, c_y, c_z, rest, t_x, t_y, t_z
+ *     spring flags {0, 0, 0, valid}  a_x, a_y, a_z, a_px, a_py, a_pz, b_x, b_y, b_z,
+ *                                    b_px, b_py, b_pz, rest, ks, kd, f_x, f_y, f_z
  *   (toward, spring: the outputs are 0 when valid = 0; the RTL's are then unused.
+ *   In 2D every z field is 0.
  *   The expected values come from the frame engine itself, see GEN_DATAPATHS below.)
  * The "sat" flags are computed here independently of the model, from exact integer
  * arithmetic, and the model's result is checked against them (a clamped result must
@@ -346,8 +347,8 @@ static void gen_div(int exhaustive)
 /*
  * rtl/toward.v and rtl/spring_force.v: the expected values come from the frame
  * engine's own code (model/engine_body.h through engine_fixed.c), on a two-node
- * graph body (node 0, node 1, edge 0 -> 1) set up by sim_fx_init on an in-memory
- * scene. Each vector writes its raw inputs into the engine's state and calls:
+ * graph body (node 0, node 1, edge 0 -> 1) of dim 2 or 3 set up by sim_fx_init on
+ * an in-memory scene. Each vector writes its raw inputs into the engine's state and calls:
  *   toward, excess = 0: sim_fx_centred_node(s, 1) with pos[0] = P, pos[1] = C and
  *       dist = rest. Node 1 has no lower neighbour, so it moves to the point
  *       toward(0 -> 1) = P + d * fx_div(rest, |d|); it returns valid.
@@ -363,18 +364,26 @@ static void gen_div(int exhaustive)
  * fx_add(P, fx_mul(d, r)) or fx_sub(d, fx_mul(d, r))); the generator stops if the
  * composition and the engine disagree.
  * Inputs are raw W-bit values; rest lengths are kept in 0..fx_max (the engine
- * holds them as signed values).
+ * holds them as signed values). Records always carry three lanes (x, y, z); in 2D
+ * the z inputs and outputs are 0.
+ *
+ * The square root's radicand is the exact sum of the squares of d: a sum of two
+ * squares is never 3, 6 or 7 modulo 8, a sum of three never 7 (Legendre). Every
+ * radicand class modulo 8 the dimension reaches is drawn on purpose at every
+ * magnitude, and the generator stops if a reachable class is missing from the vectors.
  */
+static int dim = 2;
 static scene dp_sc;
 static sim_fx dp_s;
 static double dp_pos[2][3], dp_prev[2][3];
 static bool dp_pinned[2];
 static scene_edge dp_edge;
+static long rad_class[8];   /* vectors per radicand class modulo 8 */
 
 static void dp_init(edge_kind kind)
 {
     memset(&dp_sc, 0, sizeof dp_sc);
-    dp_sc.dim = 2;
+    dp_sc.dim = dim;
     dp_sc.number = NUMBER_FIXED;
     dp_sc.fmt = fmt;
     dp_sc.dt = 1;
@@ -399,15 +408,35 @@ static void dp_init(edge_kind kind)
     if (!sim_fx_init(&dp_s, &dp_sc, &fmt)) die("sim_fx_init failed");
 }
 
-static void dp_node(int i, fx_t x, fx_t y, fx_t px, fx_t py)
+static void dp_node(int i, const fx_t x[3], const fx_t px[3])
 {
-    dp_s.pos[i][0] = x;
-    dp_s.pos[i][1] = y;
-    dp_s.pos[i][2] = 0;
-    dp_s.prev[i][0] = px;
-    dp_s.prev[i][1] = py;
-    dp_s.prev[i][2] = 0;
-    for (int k = 0; k < 3; k++) dp_s.acc[i][k] = 0;
+    for (int k = 0; k < 3; k++) {
+        dp_s.pos[i][k] = k < dim ? x[k] : 0;
+        dp_s.prev[i][k] = k < dim ? px[k] : 0;
+        dp_s.acc[i][k] = 0;
+    }
+}
+
+/* The radicand of a difference, as the datapaths form it (saturating C - P per lane). */
+static void count_radicand(const fx_t a[3], const fx_t b[3])
+{
+    fx_t d[3] = {0, 0, 0};
+    for (int k = 0; k < dim; k++) d[k] = fx_sub(&fmt, b[k], a[k]);
+    rad_class[fx_sumsq(d[0], d[1], d[2]) % 8]++;
+}
+
+/* Every class modulo 8 a sum of `dim` squares reaches must have vectors. */
+static void check_radicand_classes(void)
+{
+    for (int r = 0; r < 8; r++) {
+        int reachable = dim == 3 ? r != 7 : r != 3 && r != 6 && r != 7;
+        if (reachable && rad_class[r] == 0) {
+            char msg[80];
+            snprintf(msg, sizeof msg, "no vector has a radicand of %d modulo 8", r);
+            die(msg);
+        }
+        if (!reachable && rad_class[r] != 0) die("a radicand class no sum of squares reaches: the radicand is miscounted");
+    }
 }
 
 static fx_t rest_w(void) { return (fx_t)(rng() & (uint64_t)fx_max(&fmt)) >> (rng() % (uint64_t)fmt.width); }
@@ -415,77 +444,6 @@ static fx_t rest_w(void) { return (fx_t)(rng() & (uint64_t)fx_max(&fmt)) >> (rng
 /* Random vectors at W <= 16 are twice as many as above: the wide datapaths
    simulate slowly (about 70 and 110 cycles per vector at W = 32). */
 static int dp_scale(void) { return fmt.width > 16 ? 1 : 2; }
-
-/* ---- toward ---- */
-static void vec_toward(fx_t px, fx_t py, fx_t cx, fx_t cy, fx_t rest, int excess)
-{
-    const fx_t p[2] = {px, py}, c[2] = {cx, cy};
-    fx_t d[2], comp[2], t[2] = {0, 0};
-    bool dz = false;
-    int valid;
-    if (rest < 0) die("toward: negative rest length");
-    /* composed in rtl/toward.v's order */
-    for (int k = 0; k < 2; k++) d[k] = fx_sub(&fmt, c[k], p[k]);
-    fx_t r = fx_div(&fmt, (uint32_t)rest, (uint32_t)fx_sqrt(&fmt, fx_sumsq(d[0], d[1], 0)), &dz);
-    for (int k = 0; k < 2; k++)
-        comp[k] = excess ? fx_sub(&fmt, d[k], fx_mul(&fmt, d[k], r)) : fx_add(&fmt, p[k], fx_mul(&fmt, d[k], r));
-    /* the engine */
-    if (!excess) {
-        dp_pinned[0] = dp_pinned[1] = false;
-        dp_s.dist = rest;
-        dp_node(0, px, py, px, py);
-        dp_node(1, cx, cy, cx, cy);
-        dp_s.skipped = 0;
-        valid = sim_fx_centred_node(&dp_s, 1);
-        if (valid != (dp_s.skipped == 0)) die("toward: centred_node result and skipped count disagree");
-        for (int k = 0; k < 2; k++) {
-            if (!valid && dp_s.pos[1][k] != c[k]) die("toward: centred_node moved a node with no direction");
-            if (valid) t[k] = dp_s.pos[1][k];
-        }
-    } else {
-        fx_t a1[2], b2[2];
-        int valid2;
-        dp_s.rest[0] = rest;
-        dp_pinned[0] = false; dp_pinned[1] = true;   /* b fixed: a += e */
-        dp_node(0, px, py, px, py);
-        dp_node(1, cx, cy, cx, cy);
-        dp_s.skipped = 0;
-        sim_fx_pair_edge(&dp_s, 0);
-        valid = dp_s.skipped == 0;
-        for (int k = 0; k < 2; k++) a1[k] = dp_s.pos[0][k];
-        dp_pinned[0] = true; dp_pinned[1] = false;   /* a fixed: b -= e */
-        dp_node(0, px, py, px, py);
-        dp_node(1, cx, cy, cx, cy);
-        dp_s.skipped = 0;
-        sim_fx_pair_edge(&dp_s, 0);
-        valid2 = dp_s.skipped == 0;
-        for (int k = 0; k < 2; k++) b2[k] = dp_s.pos[1][k];
-        dp_pinned[0] = dp_pinned[1] = false;
-        if (valid != valid2) die("toward: pair_edge zero length depends on which end is fixed");
-        for (int k = 0; k < 2 && valid; k++) {
-            fx_t e;
-            if (a1[k] > fx_min(&fmt) && a1[k] < fx_max(&fmt)) e = a1[k] - p[k];
-            else if (b2[k] > fx_min(&fmt) && b2[k] < fx_max(&fmt)) e = c[k] - b2[k];
-            else e = comp[k];
-            if (fx_add(&fmt, p[k], e) != a1[k] || fx_sub(&fmt, c[k], e) != b2[k]) die("toward: excess not recovered from pair_edge");
-            t[k] = e;
-        }
-        for (int k = 0; k < 2 && !valid; k++)
-            if (a1[k] != p[k] || b2[k] != c[k]) die("toward: pair_edge moved a node with no direction");
-    }
-    if (valid != !dz) die("toward: engine and composition disagree on the zero length");
-    if (valid && (t[0] != comp[0] || t[1] != comp[1])) die("toward: engine and rtl/toward.v's order of operations disagree");
-    rec_begin((unsigned)(excess << 1 | valid));
-    put(digits, (uint64_t)px); put(digits, (uint64_t)py); put(digits, (uint64_t)cx); put(digits, (uint64_t)cy);
-    put(digits, (uint64_t)rest); put(digits, (uint64_t)t[0]); put(digits, (uint64_t)t[1]);
-    rec_end();
-}
-
-static void vec_toward2(fx_t px, fx_t py, fx_t cx, fx_t cy, fx_t rest)
-{
-    vec_toward(px, py, cx, cy, rest, 0);
-    vec_toward(px, py, cx, cy, rest, 1);
-}
 
 /* a + b wrapped to W bits (inputs only: any W-bit value is a valid input). */
 static fx_t addw(fx_t a, fx_t b) { return sext((uint64_t)((int64_t)a + b)); }
@@ -500,76 +458,206 @@ static fx_t near(fx_t mag)
     return (rng() & 1) ? -v : v;
 }
 
+/* A difference d (|d[k]| < 2^bits) whose sum of squares is `cls` modulo 8: drawn until one is. */
+static bool diff_of_class(int bits, int cls, fx_t d[3])
+{
+    for (int tries = 0; tries < 4096; tries++) {
+        for (int k = 0; k < 3; k++) d[k] = k < dim ? near((fx_t)1 << bits) : 0;
+        if ((int)(fx_sumsq(d[0], d[1], d[2]) % 8) == cls) return true;
+    }
+    return false;
+}
+
+/* ---- toward ---- */
+static void vec_toward(const fx_t p[3], const fx_t c[3], fx_t rest, int excess)
+{
+    fx_t d[3] = {0, 0, 0}, comp[3] = {0, 0, 0}, t[3] = {0, 0, 0};
+    bool dz = false;
+    int valid;
+    if (rest < 0) die("toward: negative rest length");
+    for (int k = 0; k < 3; k++)
+        if (p[k] < fx_min(&fmt) || p[k] > fx_max(&fmt) || c[k] < fx_min(&fmt) || c[k] > fx_max(&fmt))
+            die("toward: an input outside the format");
+    count_radicand(p, c);
+    /* composed in rtl/toward.v's order */
+    for (int k = 0; k < dim; k++) d[k] = fx_sub(&fmt, c[k], p[k]);
+    fx_t r = fx_div(&fmt, (uint32_t)rest, (uint32_t)fx_sqrt(&fmt, fx_sumsq(d[0], d[1], d[2])), &dz);
+    for (int k = 0; k < dim; k++)
+        comp[k] = excess ? fx_sub(&fmt, d[k], fx_mul(&fmt, d[k], r)) : fx_add(&fmt, p[k], fx_mul(&fmt, d[k], r));
+    /* the engine */
+    if (!excess) {
+        dp_pinned[0] = dp_pinned[1] = false;
+        dp_s.dist = rest;
+        dp_node(0, p, p);
+        dp_node(1, c, c);
+        dp_s.skipped = 0;
+        valid = sim_fx_centred_node(&dp_s, 1);
+        if (valid != (dp_s.skipped == 0)) die("toward: centred_node result and skipped count disagree");
+        for (int k = 0; k < dim; k++) {
+            if (!valid && dp_s.pos[1][k] != c[k]) die("toward: centred_node moved a node with no direction");
+            if (valid) t[k] = dp_s.pos[1][k];
+        }
+    } else {
+        fx_t a1[3], b2[3];
+        int valid2;
+        dp_s.rest[0] = rest;
+        dp_pinned[0] = false; dp_pinned[1] = true;   /* b fixed: a += e */
+        dp_node(0, p, p);
+        dp_node(1, c, c);
+        dp_s.skipped = 0;
+        sim_fx_pair_edge(&dp_s, 0);
+        valid = dp_s.skipped == 0;
+        for (int k = 0; k < dim; k++) a1[k] = dp_s.pos[0][k];
+        dp_pinned[0] = true; dp_pinned[1] = false;   /* a fixed: b -= e */
+        dp_node(0, p, p);
+        dp_node(1, c, c);
+        dp_s.skipped = 0;
+        sim_fx_pair_edge(&dp_s, 0);
+        valid2 = dp_s.skipped == 0;
+        for (int k = 0; k < dim; k++) b2[k] = dp_s.pos[1][k];
+        dp_pinned[0] = dp_pinned[1] = false;
+        if (valid != valid2) die("toward: pair_edge zero length depends on which end is fixed");
+        for (int k = 0; k < dim && valid; k++) {
+            fx_t e;
+            if (a1[k] > fx_min(&fmt) && a1[k] < fx_max(&fmt)) e = a1[k] - p[k];
+            else if (b2[k] > fx_min(&fmt) && b2[k] < fx_max(&fmt)) e = c[k] - b2[k];
+            else e = comp[k];
+            if (fx_add(&fmt, p[k], e) != a1[k] || fx_sub(&fmt, c[k], e) != b2[k]) die("toward: excess not recovered from pair_edge");
+            t[k] = e;
+        }
+        for (int k = 0; k < dim && !valid; k++)
+            if (a1[k] != p[k] || b2[k] != c[k]) die("toward: pair_edge moved a node with no direction");
+    }
+    if (valid != !dz) die("toward: engine and composition disagree on the zero length");
+    for (int k = 0; k < dim; k++)
+        if (valid && t[k] != comp[k]) die("toward: engine and rtl/toward.v's order of operations disagree");
+    rec_begin((unsigned)(excess << 1 | valid));
+    for (int k = 0; k < 3; k++) put(digits, (uint64_t)(k < dim ? p[k] : 0));
+    for (int k = 0; k < 3; k++) put(digits, (uint64_t)(k < dim ? c[k] : 0));
+    put(digits, (uint64_t)rest);
+    for (int k = 0; k < 3; k++) put(digits, (uint64_t)t[k]);
+    rec_end();
+}
+
+static void vec_toward2(const fx_t p[3], const fx_t c[3], fx_t rest)
+{
+    vec_toward(p, c, rest, 0);
+    vec_toward(p, c, rest, 1);
+}
+
 static void gen_toward(void)
 {
     const fx_t max = fx_max(&fmt), min = fx_min(&fmt), one = fx_one(&fmt);
     const fx_t lim[] = {min, -1, 0, 1, max};
     const fx_t rests[] = {0, 1, one, max, one / 2 + 1, fx_sat(&fmt, 3 * (int64_t)one)};
+    fx_t p[3], c[3];
     int i = 0;
-    /* Coordinates at the range limits: saturating differences, both rules. */
+    /* Coordinates at the range limits: saturating differences, both rules (z: a limit by turn). */
     for (int a = 0; a < 5; a++)
         for (int b = 0; b < 5; b++)
-            for (int c = 0; c < 5; c++)
-                for (int d = 0; d < 5; d++, i++)
-                    vec_toward(lim[a], lim[b], lim[c], lim[d], (i % 7 == 6) ? rest_w() : rests[i % 6], i & 1);
+            for (int cc = 0; cc < 5; cc++)
+                for (int d = 0; d < 5; d++, i++) {
+                    p[0] = lim[a]; p[1] = lim[b]; p[2] = lim[(a + d + i / 25) % 5];
+                    c[0] = lim[cc]; c[1] = lim[d]; c[2] = lim[(b + cc + i / 5) % 5];
+                    vec_toward(p, c, (i % 7 == 6) ? rest_w() : rests[i % 6], i & 1);
+                }
     /* Zero length: C = P, at the corners and anywhere. */
     for (i = 0; i < 40; i++) {
-        fx_t x = i < 4 ? ((i & 1) ? max : min) : coord(), y = i < 4 ? ((i & 2) ? max : min) : coord();
-        vec_toward2(x, y, x, y, (i % 3) ? rest_w() : rests[i % 6]);
+        p[0] = i < 8 ? ((i & 1) ? max : min) : coord();
+        p[1] = i < 8 ? ((i & 2) ? max : min) : coord();
+        p[2] = i < 8 ? ((i & 4) ? max : min) : coord();
+        vec_toward2(p, p, (i % 3) ? rest_w() : rests[i % 6]);
     }
     /* Short differences, every sign (a length of a few LSBs, maybe rounded to 0). */
     for (int dx = -3; dx <= 3; dx++)
-        for (int dy = -3; dy <= 3; dy++, i++) {
-            fx_t x = near(max / 2), y = near(max / 2);
-            vec_toward2(x, y, x + dx, y + dy, rests[i % 6]);
-        }
+        for (int dy = -3; dy <= 3; dy++)
+            for (int dzz = (dim == 3 ? -3 : 0); dzz <= (dim == 3 ? 3 : 0); dzz += 2, i++) {
+                for (int k = 0; k < 3; k++) p[k] = near(max / 2);
+                c[0] = addw(p[0], dx); c[1] = addw(p[1], dy); c[2] = addw(p[2], dzz);
+                vec_toward2(p, c, rests[i % 6]);
+            }
     /* Along the axes, negative and positive, every magnitude. */
     for (i = 0; i < fmt.width - 1; i++) {
-        fx_t m = (fx_t)1 << i, x = near(max / 4), y = near(max / 4);
-        vec_toward(x, y, x - m, y, rest_w(), i & 1);
-        vec_toward(x, y, x, y - m, rest_w(), !(i & 1));
-        vec_toward(x, y, x + m, y, rests[i % 6], i & 1);
-        vec_toward(x, y, x, y + m, rests[i % 6], !(i & 1));
+        fx_t m = (fx_t)1 << i;
+        for (int ax = 0; ax < dim; ax++)
+            for (int sgn = -1; sgn <= 1; sgn += 2) {
+                for (int k = 0; k < 3; k++) p[k] = near(max / 4);
+                for (int k = 0; k < 3; k++) c[k] = p[k];
+                c[ax] = addw(p[ax], sgn * m);
+                vec_toward(p, c, sgn < 0 ? rest_w() : rests[i % 6], (i + ax) & 1);
+            }
     }
+    /* Every radicand class modulo 8 the dimension reaches, at every magnitude of d. */
+    for (int bits = 1; bits < fmt.width - 1; bits++)
+        for (int cls = 0; cls < 8; cls++) {
+            fx_t d[3];
+            if (!diff_of_class(bits, cls, d)) continue;   /* unreachable in this dimension */
+            for (int k = 0; k < 3; k++) {
+                p[k] = near(max / 2);
+                c[k] = addw(p[k], d[k]);
+            }
+            vec_toward(p, c, (bits + cls) % 3 ? rest_w() : rests[cls % 6], (bits + cls) & 1);
+        }
     /* Rest length equal to the length (excess about 0), and rest 0 (T = P, e = d). */
     for (i = 0; i < 100; i++) {
-        fx_t x = near(max / 2), y = near(max / 2), cx = x + near(max / 2), cy = y + near(max / 2);
-        fx_t len = fx_sqrt(&fmt, fx_sumsq(fx_sub(&fmt, cx, x), fx_sub(&fmt, cy, y), 0));
-        vec_toward(x, y, cx, cy, len, i & 1);
-        vec_toward(x, y, cx, cy, 0, !(i & 1));
+        fx_t d[3] = {0, 0, 0};
+        for (int k = 0; k < 3; k++) {
+            p[k] = near(max / 2);
+            c[k] = addw(p[k], near(max / 2));
+            if (k < dim) d[k] = fx_sub(&fmt, c[k], p[k]);
+        }
+        fx_t len = fx_sqrt(&fmt, fx_sumsq(d[0], d[1], d[2]));
+        vec_toward(p, c, len, i & 1);
+        vec_toward(p, c, 0, !(i & 1));
     }
     /* A rope: points about one unit apart, rest about one unit. */
     for (i = 0; i < 400 * dp_scale(); i++) {
-        fx_t x = near(max / 2), y = near(max / 2);
-        vec_toward(x, y, x + near(2 * one), y + near(2 * one), one / 2 + (fx_t)(rng() % (uint64_t)one), i & 1);
+        for (int k = 0; k < 3; k++) {
+            p[k] = near(max / 2);
+            c[k] = addw(p[k], near(2 * one));
+        }
+        vec_toward(p, c, one / 2 + (fx_t)(rng() % (uint64_t)one), i & 1);
     }
     /* Anything. */
-    for (i = 0; i < 800 * dp_scale(); i++) vec_toward(coord(), coord(), coord(), coord(), rest_w(), i & 1);
+    for (i = 0; i < 800 * dp_scale(); i++) {
+        for (int k = 0; k < 3; k++) {
+            p[k] = coord();
+            c[k] = coord();
+        }
+        vec_toward(p, c, rest_w(), i & 1);
+    }
+    check_radicand_classes();
 }
 
 /* ---- spring ---- */
-static void vec_spring(const fx_t v[11])
+/* v: a[3], a_prev[3], b[3], b_prev[3], rest, ks, kd (lanes beyond dim unused: 0) */
+enum { SA = 0, SAP = 3, SB = 6, SBP = 9, SREST = 12, SKS = 13, SKD = 14, SN = 15 };
+
+static void vec_spring(fx_t v[SN])
 {
-    /* v: a_x a_y a_px a_py b_x b_y b_px b_py rest ks kd */
-    fx_t f[2] = {0, 0};
+    fx_t f[3] = {0, 0, 0};
     int valid;
-    if (v[8] < 0) die("spring: negative rest length");
-    dp_node(0, v[0], v[1], v[2], v[3]);
-    dp_node(1, v[4], v[5], v[6], v[7]);
-    dp_s.rest[0] = v[8];
-    dp_s.ks = v[9];
-    dp_s.kd = v[10];
+    for (int k = dim; k < 3; k++) v[SA + k] = v[SAP + k] = v[SB + k] = v[SBP + k] = 0;
+    if (v[SREST] < 0) die("spring: negative rest length");
+    for (int k = 0; k < SN; k++)
+        if (v[k] < fx_min(&fmt) || v[k] > fx_max(&fmt)) die("spring: an input outside the format");
+    count_radicand(&v[SA], &v[SB]);
+    dp_node(0, &v[SA], &v[SAP]);
+    dp_node(1, &v[SB], &v[SBP]);
+    dp_s.rest[0] = v[SREST];
+    dp_s.ks = v[SKS];
+    dp_s.kd = v[SKD];
     dp_s.skipped = 0;
     sim_fx_spring_edge(&dp_s, 0);
     valid = dp_s.skipped == 0;
-    for (int k = 0; k < 2; k++) {
+    for (int k = 0; k < dim; k++) {
         if (dp_s.acc[1][k] != fx_sub(&fmt, 0, dp_s.acc[0][k])) die("spring: B does not take -F");
         if (!valid && dp_s.acc[0][k] != 0) die("spring: a force with coincident ends");
         f[k] = dp_s.acc[0][k];
     }
     rec_begin((unsigned)valid);
-    for (int k = 0; k < 11; k++) put(digits, (uint64_t)v[k]);
-    put(digits, (uint64_t)f[0]); put(digits, (uint64_t)f[1]);
+    for (int k = 0; k < SN; k++) put(digits, (uint64_t)v[k]);
+    for (int k = 0; k < 3; k++) put(digits, (uint64_t)f[k]);
     rec_end();
 }
 
@@ -580,97 +668,115 @@ static void gen_spring(void)
     const fx_t rests[] = {0, 1, one, max, fx_sat(&fmt, 3 * (int64_t)one)};
     const fx_t ks_edge[] = {max, max - 1, min, one, one / 16 + 1, -1, 0};
     const fx_t kd_edge[] = {0, max, min, one / 4, 1, -one};
-    fx_t v[11];
+    fx_t v[SN];
     int i = 0;
     /* Ends at the range limits (saturating d), velocities 0, saturating or random. */
     for (int a = 0; a < 5; a++)
         for (int b = 0; b < 5; b++)
             for (int c = 0; c < 5; c++)
                 for (int d = 0; d < 5; d++, i++) {
-                    v[0] = lim[a]; v[1] = lim[b]; v[4] = lim[c]; v[5] = lim[d];
-                    for (int k = 0; k < 2; k++) {
+                    v[SA] = lim[a]; v[SA + 1] = lim[b]; v[SA + 2] = lim[(a + d + i / 25) % 5];
+                    v[SB] = lim[c]; v[SB + 1] = lim[d]; v[SB + 2] = lim[(b + c + i / 5) % 5];
+                    for (int k = 0; k < 3; k++) {
                         int j = (i / 3 + k) % 3;
-                        v[2 + k] = j == 0 ? v[k] : j == 1 ? (v[k] < 0 ? max : min) : coord();
-                        v[6 + k] = j == 0 ? v[4 + k] : j == 1 ? (v[4 + k] < 0 ? max : min) : coord();
+                        v[SAP + k] = j == 0 ? v[SA + k] : j == 1 ? (v[SA + k] < 0 ? max : min) : coord();
+                        v[SBP + k] = j == 0 ? v[SB + k] : j == 1 ? (v[SB + k] < 0 ? max : min) : coord();
                     }
-                    v[8] = (i % 6 == 5) ? rest_w() : rests[i % 5];
-                    v[9] = ks_edge[i % 7];
-                    v[10] = kd_edge[i % 6];
+                    v[SREST] = (i % 6 == 5) ? rest_w() : rests[i % 5];
+                    v[SKS] = ks_edge[i % 7];
+                    v[SKD] = kd_edge[i % 6];
                     vec_spring(v);
                 }
     /* Coincident ends, moving or not. */
     for (i = 0; i < 60; i++) {
-        v[0] = v[4] = i < 4 ? ((i & 1) ? max : min) : coord();
-        v[1] = v[5] = i < 4 ? ((i & 2) ? max : min) : coord();
-        for (int k = 0; k < 2; k++) {
-            v[2 + k] = (i & 4) ? v[k] : coord();
-            v[6 + k] = (i & 8) ? v[4 + k] : coord();
+        for (int k = 0; k < 3; k++) {
+            v[SA + k] = v[SB + k] = i < 8 ? ((i >> k & 1) ? max : min) : coord();
+            v[SAP + k] = (i & 4) ? v[SA + k] : coord();
+            v[SBP + k] = (i & 8) ? v[SB + k] : coord();
         }
-        v[8] = rests[i % 5]; v[9] = ks_edge[i % 7]; v[10] = kd_edge[i % 6];
+        v[SREST] = rests[i % 5]; v[SKS] = ks_edge[i % 7]; v[SKD] = kd_edge[i % 6];
         vec_spring(v);
     }
     /* Short differences, every sign. */
     for (int dx = -3; dx <= 3; dx++)
         for (int dy = -3; dy <= 3; dy++)
             for (int r = 0; r < 2; r++, i++) {
-                v[0] = near(max / 2); v[1] = near(max / 2);
-                v[4] = v[0] + dx; v[5] = v[1] + dy;
-                for (int k = 0; k < 2; k++) {
-                    v[2 + k] = v[k] + near(one);
-                    v[6 + k] = v[4 + k] + near(one);
+                const int dzz = dim == 3 ? (int)(rng() % 7) - 3 : 0;
+                for (int k = 0; k < 3; k++) v[SA + k] = near(max / 2);
+                v[SB] = addw(v[SA], dx); v[SB + 1] = addw(v[SA + 1], dy); v[SB + 2] = addw(v[SA + 2], dzz);
+                for (int k = 0; k < 3; k++) {
+                    v[SAP + k] = addw(v[SA + k], near(one));
+                    v[SBP + k] = addw(v[SB + k], near(one));
                 }
-                v[8] = rests[i % 5]; v[9] = ks_edge[i % 7]; v[10] = kd_edge[i % 6];
+                v[SREST] = rests[i % 5]; v[SKS] = ks_edge[i % 7]; v[SKD] = kd_edge[i % 6];
                 vec_spring(v);
             }
+    /* Every radicand class modulo 8 the dimension reaches, at every magnitude of d. */
+    for (int bits = 1; bits < fmt.width - 1; bits++)
+        for (int cls = 0; cls < 8; cls++) {
+            fx_t d[3];
+            if (!diff_of_class(bits, cls, d)) continue;   /* unreachable in this dimension */
+            for (int k = 0; k < 3; k++) {
+                v[SA + k] = near(max / 2);
+                v[SB + k] = addw(v[SA + k], d[k]);
+                v[SAP + k] = addw(v[SA + k], near(one));
+                v[SBP + k] = addw(v[SB + k], near(one));
+            }
+            v[SREST] = rest_w(); v[SKS] = (fx_t)(rng() % (uint64_t)one); v[SKD] = kd_edge[(bits + cls) % 6];
+            vec_spring(v);
+        }
     /* Saturating velocities and velocity differences. */
     for (i = 0; i < 120; i++) {
-        for (int k = 0; k < 2; k++) {
-            v[k] = coord(); v[4 + k] = coord();
-            v[2 + k] = (i & 1) ? (v[k] < 0 ? max : min) : addw(v[k], near(one));
-            v[6 + k] = (i & 2) ? (v[4 + k] < 0 ? max : min) : addw(v[4 + k], near(one));
-            if (i & 4) { v[k] = max; v[2 + k] = min + (fx_t)(rng() % 4); v[4 + k] = min; v[6 + k] = max - (fx_t)(rng() % 4); }
+        for (int k = 0; k < 3; k++) {
+            v[SA + k] = coord(); v[SB + k] = coord();
+            v[SAP + k] = (i & 1) ? (v[SA + k] < 0 ? max : min) : addw(v[SA + k], near(one));
+            v[SBP + k] = (i & 2) ? (v[SB + k] < 0 ? max : min) : addw(v[SB + k], near(one));
+            if (i & 4) { v[SA + k] = max; v[SAP + k] = min + (fx_t)(rng() % 4); v[SB + k] = min; v[SBP + k] = max - (fx_t)(rng() % 4); }
         }
-        v[8] = rest_w(); v[9] = (i & 8) ? ks_edge[i % 7] : coord(); v[10] = (i & 16) ? kd_edge[i % 6] : coord();
+        v[SREST] = rest_w(); v[SKS] = (i & 8) ? ks_edge[i % 7] : coord(); v[SKD] = (i & 16) ? kd_edge[i % 6] : coord();
         vec_spring(v);
     }
     /* Rest length 0 and the rest length equal to the length, large constants. */
     for (i = 0; i < 200; i++) {
-        for (int k = 0; k < 2; k++) {
-            v[k] = near(max / 2); v[4 + k] = v[k] + near(max / 2);
-            v[2 + k] = v[k] + near(one); v[6 + k] = v[4 + k] + near(one);
+        fx_t d[3] = {0, 0, 0};
+        for (int k = 0; k < 3; k++) {
+            v[SA + k] = near(max / 2); v[SB + k] = addw(v[SA + k], near(max / 2));
+            v[SAP + k] = addw(v[SA + k], near(one)); v[SBP + k] = addw(v[SB + k], near(one));
+            if (k < dim) d[k] = fx_sub(&fmt, v[SB + k], v[SA + k]);
         }
-        v[8] = (i & 1) ? 0 : fx_sqrt(&fmt, fx_sumsq(fx_sub(&fmt, v[4], v[0]), fx_sub(&fmt, v[5], v[1]), 0));
-        v[9] = (i & 2) ? ks_edge[i % 7] : (fx_t)(rng() % (uint64_t)max);
-        v[10] = (i & 4) ? kd_edge[i % 6] : (fx_t)(rng() % (uint64_t)max);
+        v[SREST] = (i & 1) ? 0 : fx_sqrt(&fmt, fx_sumsq(d[0], d[1], d[2]));
+        v[SKS] = (i & 2) ? ks_edge[i % 7] : (fx_t)(rng() % (uint64_t)max);
+        v[SKD] = (i & 4) ? kd_edge[i % 6] : (fx_t)(rng() % (uint64_t)max);
         vec_spring(v);
     }
     /* A spring rope: ends about one unit apart, slow, ks and kd below one. */
     for (i = 0; i < 350 * dp_scale(); i++) {
-        for (int k = 0; k < 2; k++) {
-            v[k] = near(max / 2); v[4 + k] = v[k] + near(2 * one);
-            v[2 + k] = v[k] + near(one / 8 + 1); v[6 + k] = v[4 + k] + near(one / 8 + 1);
+        for (int k = 0; k < 3; k++) {
+            v[SA + k] = near(max / 2); v[SB + k] = addw(v[SA + k], near(2 * one));
+            v[SAP + k] = addw(v[SA + k], near(one / 8 + 1)); v[SBP + k] = addw(v[SB + k], near(one / 8 + 1));
         }
-        v[8] = one / 2 + (fx_t)(rng() % (uint64_t)one);
-        v[9] = (fx_t)(rng() % (uint64_t)one);
-        v[10] = (fx_t)(rng() % (uint64_t)(one / 2));
+        v[SREST] = one / 2 + (fx_t)(rng() % (uint64_t)one);
+        v[SKS] = (fx_t)(rng() % (uint64_t)one);
+        v[SKD] = (fx_t)(rng() % (uint64_t)(one / 2));
         vec_spring(v);
     }
     /* Anything. */
     for (i = 0; i < 600 * dp_scale(); i++) {
-        for (int k = 0; k < 11; k++) v[k] = coord();
-        v[8] = rest_w();
+        for (int k = 0; k < SN; k++) v[k] = coord();
+        v[SREST] = rest_w();
         vec_spring(v);
     }
+    check_radicand_classes();
 }
 #endif
 
 int main(int argc, char **argv)
 {
-    if (argc != 7 && argc != 8)
-        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS] OUT.hex");
+    if (argc != 7 && argc != 8 && argc != 9)
+        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS [DIM]] OUT.hex");
     const char *unit = argv[1];
     const int datapath = !strcmp(unit, "toward") || !strcmp(unit, "toward_pipe") || !strcmp(unit, "spring") || !strcmp(unit, "spring_pipe");
-    if (argc == 8 && !datapath) die("SQRT_BITS and DIV_BITS apart are for toward and spring");
+    if (argc >= 8 && !datapath) die("SQRT_BITS and DIV_BITS apart are for toward and spring");
     int exhaustive;
     if (!strcmp(argv[2], "exhaustive")) exhaustive = 1;
     else if (!strcmp(argv[2], "random")) exhaustive = 0;
@@ -678,7 +784,11 @@ int main(int argc, char **argv)
     fmt.width = atoi(argv[3]);
     fmt.frac = atoi(argv[4]);
     fmt.sqrt_bits = fmt.div_bits = atoi(argv[5]);
-    if (argc == 8) fmt.div_bits = atoi(argv[6]);
+    if (argc >= 8) fmt.div_bits = atoi(argv[6]);
+#ifdef GEN_DATAPATHS
+    if (argc == 9) dim = atoi(argv[7]);
+    if (dim != 2 && dim != 3) die("DIM must be 2 or 3");
+#endif
     const char *bad = fx_format_check(&fmt);
     if (bad) die(bad);
     if (exhaustive && fmt.width > 12) die("exhaustive vectors are for W <= 12");
@@ -700,7 +810,7 @@ int main(int argc, char **argv)
     if (datapath) { /* OUT.hex.latency: the datapath's latency, from the one formula (model/timing.c) */
         hw_params hp;
         memset(&hp, 0, sizeof hp);
-        hp.dim = 2;
+        hp.dim = dim;
         hp.sqrt_bits = fmt.sqrt_bits;
         hp.div_bits = fmt.div_bits;
         char path[1024];

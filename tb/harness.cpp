@@ -31,6 +31,7 @@
 // (tb/faults.py): it passes only if the first mismatch is at the cycle the model
 // predicts for that fault.
 
+#include <algorithm>
 #include <chrono>
 #include <cinttypes>
 #include <cmath>
@@ -195,8 +196,9 @@ class Run {
     int phase() const { return model_on_ ? model_.phase : (int)top_->phase; }
     bool frame_done() const { return model_on_ ? model_.frame_done : (bool)top_->frame_done; }
     bool setup(cyc_inputs &in);
+    long run_cycles_ = 40000; // about the cycles of the frames to run: random resets land among them
     void plan_reset() {
-        reset_at_ = resets_left_-- > 0 ? cyc_ + 1 + (long)rng_.below(40000) : -1;
+        reset_at_ = resets_left_-- > 0 ? cyc_ + 1 + (long)rng_.below((uint32_t)std::min(40000L, run_cycles_)) : -1;
     }
 };
 
@@ -347,6 +349,7 @@ bool Run::setup(cyc_inputs &in) {
 Result Run::go(int frames) {
     cyc_inputs in{};
     if (!setup(in)) return r_;
+    run_cycles_ = std::max(1L, (long)frames * hw_cycles_per_frame(&hp_));
     plan_reset();
 
     // The frames: the scripted mouse when a frame starts, noise otherwise. A random

@@ -14,9 +14,13 @@
  * resets the top, writes the setup, then for every frame: drives the mouse,
  * pulses step, counts the cycles to frame_done (they must equal the formula of
  * docs/architecture.md, STRAND_CYCLES_PER_FRAME), reads every node through the
- * read port and compares x and y bit for bit; from the first reset on, no output
- * may ever be X. It prints one PASS or FAIL line;
- * a FAIL names the frame, the node, the axis and both values.
+ * read port and compares x, y and z bit for bit; from the first reset on, no output
+ * may ever be X. The status of every cycle of a frame, from the step edge to the
+ * cycle frame_done shows in, is checked against status.hex (the cycle model's
+ * prediction for this protocol, written by `strand hwgen`): the cycles FV and FEC are
+ * high, the first cycle FEC is high, and a signature of {phase, FV, FEC, busy, irq,
+ * frame_done, uidx, nidx, counter} over every cycle. It prints one PASS or FAIL line;
+ * a FAIL names the frame, the node, the axis and both values (or the status that differs).
  */
 module tb_top_frames;
 `include "strand_params_scene_local.vh"
@@ -65,6 +69,26 @@ module tb_top_frames;
     reg [39:0]  config_mem [0:NCONFIG-1];
     reg [31:0]  mouse_mem  [0:4*FRAMES-1];     // per frame: button, x, y, z
     reg [31:0]  expect_mem [0:3*N*FRAMES-1];   // per frame and node: x, y, z
+    reg [31:0]  status_mem [0:4*FRAMES-1];     // per frame: FV cycles, FEC cycles, first FEC cycle, signature
+
+    // The status of the frame under way, sampled as the cycle count is (after every edge from
+    // the step edge on), folded as model/hwgen.c folds the cycle model's: FNV-1a's step.
+    reg [31:0] fv_n, fec_n, fec_first, sig;
+    function [31:0] mix(input [31:0] h, input [31:0] v);
+        mix = (h ^ v) * 32'h01000193;
+    endfunction
+    task automatic sample_status(input integer cycle);
+        begin
+            fv_n = fv_n + {31'd0, fv};
+            fec_n = fec_n + {31'd0, fec};
+            if (fec && fec_first == 32'd0) fec_first = cycle;
+            sig = mix(sig, {29'd0, phase});
+            sig = mix(sig, {27'd0, fv, fec, busy, irq, frame_done});
+            sig = mix(sig, {{(32 - UW){1'b0}}, uidx});
+            sig = mix(sig, {{(32 - IW){1'b0}}, nidx});
+            sig = mix(sig, {{(32 - CW){1'b0}}, counter});
+        end
+    endtask
 
     integer frame, node, cycles, errors;
     reg [W-1:0] want_x, want_y, want_z;
@@ -81,6 +105,7 @@ module tb_top_frames;
         $readmemh("config.hex", config_mem);
         $readmemh("mouse.hex", mouse_mem);
         $readmemh("expected.hex", expect_mem);
+        $readmemh("status.hex", status_mem);
         if ($test$plusargs("trace")) begin
             $dumpfile("tb_top_frames.fst");
             $dumpvars(0, tb_top_frames);
@@ -113,9 +138,15 @@ module tb_top_frames;
             @(posedge clk);
             #1 step = 1'b0;
             cycles = 1;
+            fv_n = 0;
+            fec_n = 0;
+            fec_first = 0;
+            sig = 32'h811c9dc5;
+            sample_status(cycles);
             while (!frame_done) begin
                 @(posedge clk);
                 #1 cycles = cycles + 1;
+                sample_status(cycles);
                 if (cycles > TIMEOUT) begin
                     $display("FAIL tb_top_frames: frame %0d did not finish in %0d cycles", frame, TIMEOUT);
                     $fatal(1);
@@ -124,6 +155,21 @@ module tb_top_frames;
             if (cycles != `STRAND_CYCLES_PER_FRAME) begin
                 $display("FAIL tb_top_frames: frame %0d took %0d cycles, the formula says %0d", frame, cycles,
                          `STRAND_CYCLES_PER_FRAME);
+                $fatal(1);
+            end
+            if (fv_n !== status_mem[4 * frame] || fec_n !== status_mem[4 * frame + 1]) begin
+                $display("FAIL tb_top_frames: frame %0d: FV high %0d cycles, FEC high %0d; the cycle model says %0d and %0d",
+                         frame + 1, fv_n, fec_n, status_mem[4 * frame], status_mem[4 * frame + 1]);
+                $fatal(1);
+            end
+            if (fec_first !== status_mem[4 * frame + 2]) begin
+                $display("FAIL tb_top_frames: frame %0d: FEC first high in cycle %0d of the frame; the cycle model says %0d",
+                         frame + 1, fec_first, status_mem[4 * frame + 2]);
+                $fatal(1);
+            end
+            if (sig !== status_mem[4 * frame + 3]) begin
+                $display("FAIL tb_top_frames: frame %0d: the status (phase, FV, FEC, busy, irq, frame_done, uidx, nidx, counter) differs from the cycle model's in some cycle (signature %h, model %h)",
+                         frame + 1, sig, status_mem[4 * frame + 3]);
                 $fatal(1);
             end
             // read every node back: address in, data the next cycle
@@ -141,8 +187,8 @@ module tb_top_frames;
                 end
             end
         end
-        $display("PASS tb_top_frames (%0d frames x %0d nodes bit-exact, %0d cycles per frame)", FRAMES, N,
-                 `STRAND_CYCLES_PER_FRAME);
+        $display("PASS tb_top_frames (%0d frames x %0d nodes bit-exact, %0d cycles per frame, FV, FEC and the status of every cycle as the cycle model says)",
+                 FRAMES, N, `STRAND_CYCLES_PER_FRAME);
         $finish;
     end
 endmodule

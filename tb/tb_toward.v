@@ -4,23 +4,25 @@
 /*
  * tb_toward - self-checking testbench for rtl/toward.v: values and timing.
  *
- * Reads vectors written by tb/gen_vectors.c (unit "toward"; record: flags
- * {0,0,excess,valid}, p_x, p_y, c_x, c_y, rest_len, t_x, t_y). The expected values
+ * Reads vectors written by tb/gen_vectors.c (unit "toward", DIM 2 or 3; record: flags
+ * {0,0,excess,valid}, p_x, p_y, p_z, c_x, c_y, c_z, rest_len, t_x, t_y, t_z; z is 0
+ * in 2D). The expected values
  * are the frame engine's own: excess = 0 the centred rule's target
  * (model/engine_body.h toward(), through sim_fx_centred_node), excess = 1 the
  * pairwise rule's excess (through sim_fx_pair_edge); valid = 0 where the engine
- * skips the constraint for a zero length. t_x, t_y are checked when valid = 1 only
+ * skips the constraint for a zero length. t is checked when valid = 1 only
  * (the callers ignore them otherwise).
  * Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  *
  * For every vector it checks the latency contract of toward.v, counting the cycle
  * in which start is high as cycle 0 and sampling the outputs between edges (inputs
  * are driven on the falling edge):
- *   - cycles 1 .. LATENCY-1: busy = 1, done = 0, and t_x, t_y, valid still hold the
- *     previous operation's values; t_x alone may already change in cycle LATENCY-1
- *     (toward.v writes it one cycle before t_y; callers read them at done);
+ *   - cycles 1 .. LATENCY-1: busy = 1, done = 0, and t, valid still hold the
+ *     previous operation's values; lane k may already change from cycle
+ *     LATENCY - DIM + 1 + k (toward.v writes the lanes one a cycle, the last in the
+ *     done cycle; callers read them at done);
  *   - cycle LATENCY (model/timing.c hw_toward_latency, +latency=): done = 1, busy = 0, and the new
- *     t_x, t_y, valid;
+ *     t, valid;
  *   - the next operation starts back to back in the done cycle, except after every
  *     4th vector (one idle cycle) and every 16th (three): done must have dropped,
  *     busy stay low and the outputs hold.
@@ -37,11 +39,12 @@ module tb_toward;
     parameter integer F         = 16;      // fraction bits under test
     parameter integer SQRT_BITS = W - 1;   // root bits resolved under test
     parameter integer DIV_BITS  = W - 1;   // quotient bits resolved under test
+    parameter integer DIM       = 2;       // 2, or 3: the z lane
     parameter integer MAXN      = 1 << 14; // capacity of the vector memory
 
     integer          LATENCY;  // start to done: +latency=, from model/timing.c (tb/gen_vectors.c writes it)
     localparam integer FD = 4 * ((W + 3) / 4);             // a W-bit field padded to hex digits
-    localparam integer RW = 4 + 7 * FD;                    // record width
+    localparam integer RW = 4 + 10 * FD;                   // record width
 
     reg [RW-1:0]     mem [0:MAXN-1];
     reg [8*64-1:0]   name;
@@ -57,20 +60,33 @@ module tb_toward;
     reg              reset = 1'b1;
     reg              start = 1'b0;
     reg              excess = 1'b0;
-    reg  [W-1:0]     p_x = {W{1'b0}}, p_y = {W{1'b0}}, c_x = {W{1'b0}}, c_y = {W{1'b0}};
+    reg  [W-1:0]     p_x = {W{1'b0}}, p_y = {W{1'b0}}, p_z = {W{1'b0}}, c_x = {W{1'b0}}, c_y = {W{1'b0}}, c_z = {W{1'b0}};
     reg  [W-1:0]     rest_len = {W{1'b0}};
     wire             busy, done, valid;
-    wire [W-1:0]     t_x, t_y;
+    wire [W-1:0]     t_x, t_y, t_z;
 
     // the vector under test and the outputs expected to hold
-    reg  [W-1:0]     px_i, py_i, cx_i, cy_i, rest_i, tx_exp, ty_exp, prev_tx, prev_ty;
+    reg  [W-1:0]     px_i, py_i, pz_i, cx_i, cy_i, cz_i, rest_i, tx_exp, ty_exp, tz_exp, prev_tx, prev_ty, prev_tz;
     reg              ex_i, valid_exp, prev_valid;
 
-    // the 2D datapath (DIM = 2): lanes x, y
-    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(2)) dut (
+    // the datapath: lanes x, y (and z when DIM = 3; in 2D the z inputs are unused and t_z is 0)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [3*W-1:0]   p3 = {p_z, p_y, p_x}, c3 = {c_z, c_y, c_x};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [DIM*W-1:0] t_bus;
+    assign t_x = t_bus[0 +: W];
+    assign t_y = t_bus[W +: W];
+    generate
+        if (DIM == 3) begin : g_z
+            assign t_z = t_bus[(DIM-1)*W +: W];
+        end else begin : g_no_z
+            assign t_z = {W{1'b0}};
+        end
+    endgenerate
+    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) dut (
         .clk(clk), .reset(reset), .start(start), .excess(excess),
-        .p({p_y, p_x}), .c({c_y, c_x}), .rest_len(rest_len),
-        .busy(busy), .done(done), .t({t_y, t_x}), .valid(valid));
+        .p(p3[DIM*W-1:0]), .c(c3[DIM*W-1:0]), .rest_len(rest_len),
+        .busy(busy), .done(done), .t(t_bus), .valid(valid));
 
     initial forever #5 clk = !clk;
 
@@ -90,17 +106,24 @@ module tb_toward;
         begin
             if (!cond) begin
                 if (errors == 0)
-                    $sformat(first_msg, "vector #%0d excess=%b p=(%h,%h) c=(%h,%h) rest=%h in cycle %0d: busy=%b done=%b t=(%h,%h) valid=%b, expected t=(%h,%h) valid=%b (t checked when valid)",
-                             i, ex_i, px_i, py_i, cx_i, cy_i, rest_i, cycle_no, busy, done, t_x, t_y, valid,
-                             tx_exp, ty_exp, valid_exp);
+                    $sformat(first_msg, "vector #%0d excess=%b p=(%h,%h,%h) c=(%h,%h,%h) rest=%h in cycle %0d: busy=%b done=%b t=(%h,%h,%h) valid=%b, expected t=(%h,%h,%h) valid=%b (t checked when valid)",
+                             i, ex_i, px_i, py_i, pz_i, cx_i, cy_i, cz_i, rest_i, cycle_no, busy, done, t_x, t_y, t_z, valid,
+                             tx_exp, ty_exp, tz_exp, valid_exp);
                 errors = errors + 1;
             end
         end
     endtask
 
-    // The outputs hold the last result, idle or busy.
-    wire held_but_t_x = t_y === prev_ty && valid === prev_valid;
-    wire held = held_but_t_x && t_x === prev_tx;
+    // The outputs hold the last result, idle or busy; in cycle k of an operation lane j
+    // may already be new from cycle LATENCY - DIM + 1 + j on.
+    wire held = t_x === prev_tx && t_y === prev_ty && t_z === prev_tz && valid === prev_valid;
+    function held_in;
+        input integer c;
+        begin
+            held_in = valid === prev_valid && (t_x === prev_tx || c >= LATENCY - DIM + 1) &&
+                      (t_y === prev_ty || c >= LATENCY - DIM + 2) && (t_z === prev_tz || c >= LATENCY - DIM + 3);
+        end
+    endfunction
 
     // Inputs while busy or idle: random values; start high every 3rd operation
     // while busy (ignored), low when idle.
@@ -112,6 +135,8 @@ module tb_toward;
             rnd = $random; p_y = rnd[W-1:0];
             rnd = $random; c_x = rnd[W-1:0];
             rnd = $random; c_y = rnd[W-1:0];
+            rnd = $random; p_z = rnd[W-1:0];
+            rnd = $random; c_z = rnd[W-1:0];
             rnd = $random; rest_len = rnd[W-1:0];
             excess = rnd[W-1];
         end
@@ -121,9 +146,11 @@ module tb_toward;
     task check_reset;
         input integer cycle_no;
         begin
-            check(busy === 1'b0 && done === 1'b0 && t_x === {W{1'b0}} && t_y === {W{1'b0}} && valid === 1'b0, cycle_no);
+            check(busy === 1'b0 && done === 1'b0 && t_x === {W{1'b0}} && t_y === {W{1'b0}} && t_z === {W{1'b0}} &&
+                  valid === 1'b0, cycle_no);
             prev_tx = {W{1'b0}};
             prev_ty = {W{1'b0}};
+            prev_tz = {W{1'b0}};
             prev_valid = 1'b0;
         end
     endtask
@@ -144,8 +171,8 @@ module tb_toward;
         end
         errors = 0;
         i = -1;
-        px_i = 0; py_i = 0; cx_i = 0; cy_i = 0; rest_i = 0; ex_i = 0;
-        tx_exp = 0; ty_exp = 0; valid_exp = 0;
+        px_i = 0; py_i = 0; pz_i = 0; cx_i = 0; cy_i = 0; cz_i = 0; rest_i = 0; ex_i = 0;
+        tx_exp = 0; ty_exp = 0; tz_exp = 0; valid_exp = 0;
 
         // Reset.
         repeat (2) @(posedge clk);
@@ -156,18 +183,21 @@ module tb_toward;
         for (i = 0; i < n; i = i + 1) begin
             ex_i      = mem[i][RW-3];
             valid_exp = mem[i][RW-4];
-            px_i      = mem[i][6*FD +: W];
-            py_i      = mem[i][5*FD +: W];
-            cx_i      = mem[i][4*FD +: W];
-            cy_i      = mem[i][3*FD +: W];
-            rest_i    = mem[i][2*FD +: W];
-            tx_exp    = mem[i][1*FD +: W];
-            ty_exp    = mem[i][0*FD +: W];
+            px_i      = mem[i][9*FD +: W];
+            py_i      = mem[i][8*FD +: W];
+            pz_i      = mem[i][7*FD +: W];
+            cx_i      = mem[i][6*FD +: W];
+            cy_i      = mem[i][5*FD +: W];
+            cz_i      = mem[i][4*FD +: W];
+            rest_i    = mem[i][3*FD +: W];
+            tx_exp    = mem[i][2*FD +: W];
+            ty_exp    = mem[i][1*FD +: W];
+            tz_exp    = mem[i][0*FD +: W];
 
             // Once, half way: a reset in the middle of an operation.
             if (i == n / 2) begin
                 start = 1'b1;
-                excess = ex_i; p_x = px_i; p_y = py_i; c_x = cx_i; c_y = cy_i; rest_len = rest_i;
+                excess = ex_i; p_x = px_i; p_y = py_i; p_z = pz_i; c_x = cx_i; c_y = cy_i; c_z = cz_i; rest_len = rest_i;
                 @(posedge clk); @(negedge clk);
                 start = 1'b0;
                 repeat (LATENCY / 2) @(posedge clk);
@@ -183,21 +213,22 @@ module tb_toward;
             // Cycle 0: start high (the done cycle of the previous operation,
             // or after idle cycles).
             start = 1'b1;
-            excess = ex_i; p_x = px_i; p_y = py_i; c_x = cx_i; c_y = cy_i; rest_len = rest_i;
+            excess = ex_i; p_x = px_i; p_y = py_i; p_z = pz_i; c_x = cx_i; c_y = cy_i; c_z = cz_i; rest_len = rest_i;
             @(posedge clk); @(negedge clk);
-            // Cycles 1 .. LATENCY-1: busy; the outputs hold, but for t_x in cycle
-            // LATENCY-1 (toward.v writes t_x in the cycle before done).
+            // Cycles 1 .. LATENCY-1: busy; the outputs hold, but for the lanes written
+            // before done (toward.v writes lane j in cycle LATENCY - DIM + 1 + j).
             for (k = 1; k < LATENCY; k = k + 1) begin
                 if (k == 1 || k == LATENCY / 2 || k == LATENCY - 1) drive_other(1'b1);
-                check(busy === 1'b1 && done === 1'b0 && (held || (k == LATENCY - 1 && held_but_t_x)), k);
+                check(busy === 1'b1 && done === 1'b0 && held_in(k), k);
                 @(posedge clk); @(negedge clk);
             end
             // Cycle LATENCY: the result, done.
             start = 1'b0;
             check(busy === 1'b0 && done === 1'b1 && valid === valid_exp && (valid_exp === 1'b0 ||
-                  (t_x === tx_exp && t_y === ty_exp)) && ^{t_x, t_y} !== 1'bx, LATENCY);
+                  (t_x === tx_exp && t_y === ty_exp && t_z === tz_exp)) && ^{t_x, t_y, t_z} !== 1'bx, LATENCY);
             prev_tx = t_x;
             prev_ty = t_y;
+            prev_tz = t_z;
             prev_valid = valid;
             // Every 4th vector: idle cycles; done must have dropped, the outputs hold.
             if (i % 4 == 3) begin

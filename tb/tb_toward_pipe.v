@@ -6,13 +6,14 @@
  * throughput.
  *
  * Reads the vectors of toward (tb/gen_vectors.c, unit toward_pipe: the frame engine's
- * own results; record: flags {0,0,excess,valid}, p_x, p_y, c_x, c_y, rest, t_x, t_y)
- * and streams them into the 2D datapath, mostly one a clock; one cycle in 5 (by a
+ * own results; record: flags {0,0,excess,valid}, p_x, p_y, p_z, c_x, c_y, c_z, rest,
+ * t_x, t_y, t_z; z is 0 in 2D) and streams them into the datapath (DIM 2 or 3), mostly
+ * one a clock; one cycle in 5 (by a
  * fixed pseudo-random pattern) drives random operands with in_valid low. Each
  * operation carries its vector number as its tag. In every cycle the outputs are
  * checked against what went in LATENCY cycles before (+latency=, model/timing.c
  * hw_toward_pipe_latency): out_valid exactly when a vector went in, then its tag, its
- * ok (the engine's valid), its P and C (out_p, out_c: CARRY on) and, when ok, t_x, t_y.
+ * ok (the engine's valid), its P and C (out_p, out_c: CARRY on) and, when ok, t.
  * A reset pulse in the middle of the
  * stream must clear every operation in flight (no out_valid for LATENCY cycles).
  * Plusargs: +vectors=FILE +n=COUNT +latency=L +name=NAME.
@@ -24,10 +25,11 @@ module tb_toward_pipe;
     parameter integer F         = 16;
     parameter integer SQRT_BITS = W - 1;
     parameter integer DIV_BITS  = W - 1;
+    parameter integer DIM       = 2;
     parameter integer MAXN      = 1 << 14;
 
     localparam integer FD    = 4 * ((W + 3) / 4);
-    localparam integer RW    = 4 + 7 * FD;
+    localparam integer RW    = 4 + 10 * FD;
     localparam integer TAG_W = 16;
     localparam integer HIST  = 256;  // cycles of history kept (LATENCY must be below)
 
@@ -42,21 +44,37 @@ module tb_toward_pipe;
 
     reg              clk = 1'b0, reset = 1'b1;
     reg              in_valid = 1'b0, in_excess = 1'b0;
-    reg  [W-1:0]     p_x, p_y, c_x, c_y, rest;
+    reg  [W-1:0]     p_x, p_y, p_z, c_x, c_y, c_z, rest;
     reg  [TAG_W-1:0] tag;
     wire             out_valid, out_ok;
-    wire [W-1:0]     t_x, t_y;
     wire [TAG_W-1:0] out_tag;
-    wire [W-1:0]     op_x, op_y, oc_x, oc_y;  // CARRY: P and C come back beside T
+    // lanes x, y (and z when DIM = 3; in 2D the z inputs are unused and the z outputs 0)
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [3*W-1:0]   p3 = {p_z, p_y, p_x}, c3 = {c_z, c_y, c_x};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [DIM*W-1:0] t_bus, op_bus, oc_bus;  // CARRY: P and C come back beside T
+    wire [3*W-1:0]   t3, op3, oc3;
+    generate
+        if (DIM == 3) begin : g_z
+            assign t3 = t_bus;
+            assign op3 = op_bus;
+            assign oc3 = oc_bus;
+        end else begin : g_no_z
+            assign t3 = {{W{1'b0}}, t_bus};
+            assign op3 = {{W{1'b0}}, op_bus};
+            assign oc3 = {{W{1'b0}}, oc_bus};
+        end
+    endgenerate
+    wire [W-1:0]     t_x = t3[0 +: W], t_y = t3[W +: W], t_z = t3[2*W +: W];
 
     // what went in, by cycle: valid and vector number (-1: none)
     integer          sent [0:HIST-1];
 
-    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(2), .TAG_W(TAG_W), .CARRY(1'b1)) dut (
+    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W), .CARRY(1'b1)) dut (
         .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
-        .in_p({p_y, p_x}), .in_c({c_y, c_x}), .in_rest(rest), .in_tag(tag),
-        .out_valid(out_valid), .out_t({t_y, t_x}), .out_ok(out_ok), .out_tag(out_tag),
-        .out_p({op_y, op_x}), .out_c({oc_y, oc_x}));
+        .in_p(p3[DIM*W-1:0]), .in_c(c3[DIM*W-1:0]), .in_rest(rest), .in_tag(tag),
+        .out_valid(out_valid), .out_t(t_bus), .out_ok(out_ok), .out_tag(out_tag),
+        .out_p(op_bus), .out_c(oc_bus));
 
     initial forever #5 clk = !clk;
 
@@ -90,16 +108,19 @@ module tb_toward_pipe;
             if (out_valid !== (v >= 0)) fail(v >= 0 ? "out_valid low for an operation in flight" : "out_valid high with nothing sent");
             if (v >= 0) begin
                 if (out_tag !== v[TAG_W-1:0]) fail("wrong tag (operations out of order)");
-                if (op_x !== mem[v][6*FD +: W] || op_y !== mem[v][5*FD +: W] || oc_x !== mem[v][4*FD +: W] ||
-                    oc_y !== mem[v][3*FD +: W]) fail("out_p, out_c are not the operation's P and C");
+                // (in 2D the records' z and the z outputs here are 0)
+                if (op3 !== {mem[v][7*FD +: W], mem[v][8*FD +: W], mem[v][9*FD +: W]} ||
+                    oc3 !== {mem[v][4*FD +: W], mem[v][5*FD +: W], mem[v][6*FD +: W]})
+                    fail("out_p, out_c are not the operation's P and C");
                 if (out_ok !== mem[v][RW-4]) begin
                     $display("FAIL %0s: vector %0d: ok=%b, expected %b", name, v, out_ok, mem[v][RW-4]);
                     $fatal(1);
                 end
-                if (mem[v][RW-4] && (t_x !== mem[v][FD +: W] || t_y !== mem[v][0 +: W])) begin
-                    $display("FAIL %0s: vector %0d excess=%b p=(%h,%h) c=(%h,%h) rest=%h: t=(%h,%h), expected (%h,%h)",
-                             name, v, mem[v][RW-3], mem[v][6*FD +: W], mem[v][5*FD +: W], mem[v][4*FD +: W],
-                             mem[v][3*FD +: W], mem[v][2*FD +: W], t_x, t_y, mem[v][FD +: W], mem[v][0 +: W]);
+                if (mem[v][RW-4] && (t_x !== mem[v][2*FD +: W] || t_y !== mem[v][FD +: W] || t_z !== mem[v][0 +: W])) begin
+                    $display("FAIL %0s: vector %0d excess=%b p=(%h,%h,%h) c=(%h,%h,%h) rest=%h: t=(%h,%h,%h), expected (%h,%h,%h)",
+                             name, v, mem[v][RW-3], mem[v][9*FD +: W], mem[v][8*FD +: W], mem[v][7*FD +: W],
+                             mem[v][6*FD +: W], mem[v][5*FD +: W], mem[v][4*FD +: W], mem[v][3*FD +: W],
+                             t_x, t_y, t_z, mem[v][2*FD +: W], mem[v][FD +: W], mem[v][0 +: W]);
                     $fatal(1);
                 end
                 done_n = done_n + 1;
@@ -116,9 +137,9 @@ module tb_toward_pipe;
             if (!reset && next < n && rnd[20:18] != 3'd0) begin
                 in_valid  = 1'b1;
                 in_excess = mem[next][RW-3];
-                p_x = mem[next][6*FD +: W]; p_y = mem[next][5*FD +: W];
-                c_x = mem[next][4*FD +: W]; c_y = mem[next][3*FD +: W];
-                rest = mem[next][2*FD +: W];
+                p_x = mem[next][9*FD +: W]; p_y = mem[next][8*FD +: W]; p_z = mem[next][7*FD +: W];
+                c_x = mem[next][6*FD +: W]; c_y = mem[next][5*FD +: W]; c_z = mem[next][4*FD +: W];
+                rest = mem[next][3*FD +: W];
                 tag = next[TAG_W-1:0];
                 sent[cyc % HIST] = next;
                 next = next + 1;
@@ -129,6 +150,8 @@ module tb_toward_pipe;
                 junk = ~rnd;                    p_y = junk[W-1:0];
                 junk = rnd ^ 32'h5a5a_a5a5;     c_x = junk[W-1:0];
                 junk = rnd + 32'd99;            c_y = junk[W-1:0];
+                junk = rnd ^ 32'hc3c3_3c3c;     p_z = junk[W-1:0];
+                junk = rnd - 32'd7;             c_z = junk[W-1:0];
                 rest = rnd[W-1:0];
                 tag = rnd[TAG_W-1:0];
                 sent[cyc % HIST] = -1;

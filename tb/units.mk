@@ -15,10 +15,11 @@
 #     reduced SQRT_BITS/DIV_BITS;
 #   - the Verilator test tb/exhaustive_units.cpp: every operand at W=12 against
 #     model/fixed.c called directly (in three parallel processes);
-#   - one Icarus testbench (tb/tb_toward.v, tb/tb_spring_force.v) per configuration
-#     in UNITS_DP_TESTS, with vectors from tb/gen_vectors.c built with the frame
-#     engine (model/engine_fixed.c): edge cases and fixed-seed random ones at W=32
-#     with full SQRT_BITS/DIV_BITS and at W=12 with reduced ones. The datapaths are
+#   - one Icarus testbench (tb/tb_toward.v, tb/tb_toward_pipe.v, tb/tb_spring_force.v) per
+#     configuration in UNITS_DP_TESTS, with vectors from tb/gen_vectors.c built with the
+#     frame engine (model/engine_fixed.c): edge cases, every radicand class modulo 8 the
+#     dimension reaches, and fixed-seed random ones at W=32 with full SQRT_BITS/DIV_BITS
+#     and at W=12 or 16 with reduced ones, in 2D and in 3D. The datapaths are
 #     compiled from UNITS_RTL_DIR (default rtl/), so a modified copy can be tested:
 #         make -f tb/units.mk units-datapaths UNITS_RTL_DIR=/tmp/rtl BUILD=/tmp/b
 # Each test prints "PASS <name> (<N> vectors)" or "FAIL <name>: ..."; a recipe fails
@@ -90,18 +91,26 @@ UNITS_ICARUS_TESTS := \
     fx_div_pipe_w32_f16_b8_random:div_pipe:random:32:16:8 \
     fx_div_pipe_w32_f30_b31_random:div_pipe:random:32:30:31
 
-# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS (module is toward or
-# spring_force; its testbench is tb/tb_<module>.v).
+# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM (module is toward,
+# toward_pipe, spring_force or spring_force_pipe; its testbench is tb/tb_<module>.v; DIM 2 or 3: in 3D the
+# radicand, a sum of three squares, reaches classes a sum of two never does).
 UNITS_DP_TESTS := \
-    toward_w32_f16_s31_d31:toward:32:16:31:31 \
-    toward_w12_f6_s8_d9:toward:12:6:8:9 \
-    toward_pipe_w32_f16_s31_d31:toward_pipe:32:16:31:31 \
-    toward_pipe_w12_f6_s8_d9:toward_pipe:12:6:8:9 \
-    toward_pipe_w16_f8_s4_d6:toward_pipe:16:8:4:6 \
-    spring_force_w32_f16_s31_d31:spring_force:32:16:31:31 \
-    spring_force_w12_f6_s8_d9:spring_force:12:6:8:9 \
-    spring_force_pipe_w32_f16_s31_d31:spring_force_pipe:32:16:31:31 \
-    spring_force_pipe_w12_f6_s8_d9:spring_force_pipe:12:6:8:9
+    toward_w32_f16_s31_d31:toward:32:16:31:31:2 \
+    toward_w12_f6_s8_d9:toward:12:6:8:9:2 \
+    toward_3d_w32_f16_s31_d31:toward:32:16:31:31:3 \
+    toward_3d_w12_f6_s8_d9:toward:12:6:8:9:3 \
+    toward_pipe_w32_f16_s31_d31:toward_pipe:32:16:31:31:2 \
+    toward_pipe_w12_f6_s8_d9:toward_pipe:12:6:8:9:2 \
+    toward_pipe_w16_f8_s4_d6:toward_pipe:16:8:4:6:2 \
+    toward_pipe_3d_w32_f16_s31_d31:toward_pipe:32:16:31:31:3 \
+    toward_pipe_3d_w16_f8_s4_d6:toward_pipe:16:8:4:6:3 \
+    spring_force_w32_f16_s31_d31:spring_force:32:16:31:31:2 \
+    spring_force_w12_f6_s8_d9:spring_force:12:6:8:9:2 \
+    spring_force_3d_w32_f16_s31_d31:spring_force:32:16:31:31:3 \
+    spring_force_3d_w12_f6_s8_d9:spring_force:12:6:8:9:3 \
+    spring_force_pipe_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:2 \
+    spring_force_pipe_w12_f6_s8_d9:spring_force_pipe:12:6:8:9:2 \
+    spring_force_pipe_3d_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:3
 
 # Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
 UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
@@ -133,7 +142,7 @@ else \
 fi
 endef
 
-.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths
+.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors
 
 test-units: units-icarus units-verilator units-datapaths
 
@@ -188,15 +197,15 @@ $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/
 	    $(addprefix $(UNITS_ROOT)/model/,fixed.c engine_fixed.c scene.c timing.c) $(UNITS_INIH) -lm
 
 # One datapath test: vectors (cached), simulator (cached), and a run (always).
-# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS
+# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS, $(7) DIM
 define UNITS_DP_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $$@ > $$@.n
+	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $$@ > $$@.n
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -205,7 +214,10 @@ units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
 units-datapaths: units-run-$(1)
 endef
 
-$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
+$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
+
+# Every configuration's vectors (make mutate runs the benches on mutated copies of the RTL).
+units-vectors: $(foreach t,$(UNITS_ICARUS_TESTS) $(UNITS_DP_TESTS),$(UNITS_BUILD)/$(word 1,$(subst :, ,$(t)))/vectors.hex)
 
 # Verilator exhaustive test at W=12, F=6, full SQRT_BITS/DIV_BITS.
 UNITS_EXH_DIR := $(UNITS_BUILD)/exhaustive_w12
@@ -240,7 +252,8 @@ UNITS_LINT_PARAMS_mul_pipe  := "" "-GW=8" "-GW=17" "-GW=18"
 UNITS_LINT_PARAMS_sqrt_pipe := $(UNITS_LINT_PARAMS_sqrt)
 UNITS_LINT_PARAMS_div_pipe  := $(UNITS_LINT_PARAMS_div)
 # the datapath testbenches (with the RTL under them), Verilator with --timing
-UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -GF=1 -GSQRT_BITS=1 -GDIV_BITS=1"
+UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -GF=1 -GSQRT_BITS=1 -GDIV_BITS=1" "-GDIM=3" \
+                          "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9 -GDIM=3"
 
 lint-units:
 	@set -e; cd $(UNITS_ROOT); \
