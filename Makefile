@@ -201,7 +201,7 @@ lockstep-soak: bootstrap
 	@nice -n 10 python3 scripts/lockstep_soak.py --scenes $(SOAK_SCENES) --chunk $(SOAK_CHUNK) --jobs $(JOBS) --doc docs/verification.md
 
 # Mutation testing (long, not in make test): MUTANTS mutants of rtl/ (copies in build/mutate/),
-# each through the unit benches, the Icarus frame bench and lockstep on three builds, in a time
+# each through the unit benches, the Icarus frame bench and lockstep on six builds, in a time
 # budget; the score and the survivors go to docs/verification.md (region 'mutate').
 MUTANTS ?= 120
 MUTATE_SEED ?= 1

@@ -20,14 +20,17 @@ kill), within --budget seconds (default 300) a mutant:
   compile   iverilog -Wall on strand_core: an error makes the mutant stillborn (not
             counted), a new warning kills it (make lint would fail)
   units     the unit benches of the mutated file (tb/units.mk's configurations: the
-            arithmetic units' Icarus benches, toward, toward_pipe and spring_force in 2D
-            and 3D), when it has one
+            arithmetic units' Icarus benches, toward, toward_pipe, spring_force and
+            spring_force_pipe in 2D and 3D), when it has one
   frames    the Icarus frame bench (positions, cycles, FV, FEC, the status of every
-            cycle) on every test scene in tb/scenes, 20 frames, both orders
+            cycle) on every test scene in tb/scenes and tb/scenes/previous, 20 frames, both orders
   lockstep  Verilator lockstep (every output, every cycle, random stimulus and resets)
-            on three builds: sim/scenes/ref000_rope.scene (serial chain),
-            tb/scenes/graph3d_pin_grab.scene (3D graph) and tb/scenes/chain_grab_3d.scene
-            in the red/black order (pipelined 3D chain)
+            on six builds: sim/scenes/ref000_rope.scene (serial chain),
+            tb/scenes/graph3d_pin_grab.scene (3D graph), tb/scenes/chain_grab_3d.scene
+            in the red/black order (pipelined 3D chain), the two chains of
+            tb/scenes/previous/ (projection = previous, pipelined and serial) and
+            tb/scenes/chain_springs_q12.scene in the red/black order (the pipelined
+            spring pass); the build that uses the mutated file most goes first
 A mutant no check fails in its budget survives. A survivor shown to be equivalent to the
 RTL (no input sequence can tell them apart) is listed in tb/mutate_equivalent.txt with the
 argument, and is not counted; any other survivor fails the run. Results go to
@@ -58,12 +61,16 @@ STRAND = os.path.join(ROOT, BUILD, "strand")
 SKIP_FILES = {"strand_axil.v", "strand_defs.vh", "strand_addr.vh"}
 DECL = re.compile(r"^\s*(wire|reg|input|output|inout|localparam|parameter|integer|genvar|function|task|module|"
                   r"`|endmodule|endfunction|endtask|end\b|begin\b|else\s*$|generate|endgenerate|case|endcase|default\s*:\s*$)")
-FRAME_SCENES = sorted(glob.glob(os.path.join(ROOT, "tb", "scenes", "*.scene")))
+FRAME_SCENES = sorted(glob.glob(os.path.join(ROOT, "tb", "scenes", "*.scene")) + glob.glob(os.path.join(ROOT, "tb", "scenes", "previous", "*.scene")))
 LOCKSTEP = [("tb/scenes/graph3d_pin_grab.scene", ""), ("tb/scenes/chain_grab_3d.scene", "redblack"),
-            ("sim/scenes/ref000_rope.scene", "")]
+            ("sim/scenes/ref000_rope.scene", ""),
+            # projection = previous, pipelined and serial; the pipelined spring pass
+            ("tb/scenes/previous/chain_pair_q16.scene", "redblack"), ("tb/scenes/previous/rope_centred.scene", ""),
+            ("tb/scenes/chain_springs_q12.scene", "redblack")]
 # the build that uses a file most goes first (the budget may not reach the last)
 LOCKSTEP_FIRST = {"chain_stream.v": 1, "toward_pipe.v": 1, "fx_mul_pipe.v": 1, "fx_sqrt_pipe.v": 1, "fx_div_pipe.v": 1,
-                  "delay_line.v": 1, "chain_sequencer.v": 2, "toward.v": 2}
+                  "delay_line.v": 1, "chain_sequencer.v": 2, "toward.v": 2, "toward_prev_pipe.v": 3, "toward_prev.v": 4,
+                  "spring_stream.v": 5, "spring_force_pipe.v": 5}
 CHECKS = ["compile", "units", "frames", "lockstep"]
 EQUIV_FILE = os.path.join(ROOT, "tb", "mutate_equivalent.txt")
 
@@ -297,7 +304,9 @@ UNIT_FILES = {"add": ["fx_add.v"], "mul": ["fx_mul.v", "fx_round.v"], "avg": ["f
               "div": ["fx_div.v"], "mul_pipe": ["fx_mul_pipe.v", "fx_round.v"], "sqrt_pipe": ["fx_sqrt_pipe.v"],
               "div_pipe": ["fx_div_pipe.v"]}
 DP_FILES = {"toward": ["toward.v"], "spring_force": ["spring_force.v"],
-            "toward_pipe": ["toward_pipe.v", "fx_sqrt_pipe.v", "fx_div_pipe.v", "fx_mul_pipe.v", "delay_line.v", "strand_ram.v"]}
+            "toward_pipe": ["toward_pipe.v", "fx_sqrt_pipe.v", "fx_div_pipe.v", "fx_mul_pipe.v", "delay_line.v", "strand_ram.v"],
+            "spring_force_pipe": ["spring_force_pipe.v", "fx_sqrt_pipe.v", "fx_div_pipe.v", "fx_mul_pipe.v", "delay_line.v",
+                                  "strand_ram.v"]}
 DP_COMMON = ["fx_add.v", "fx_mul.v", "fx_round.v", "fx_sqrt.v", "fx_div.v"]
 
 
