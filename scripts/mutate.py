@@ -38,7 +38,7 @@ build/mutate/results.json; a table of the score (killed / counted, by check) and
 survivors to stdout, and with --doc FILE into FILE's generated region 'mutate'
 (scripts/doc_region.py). --report writes the table again from results.json; --resume keeps
 the results of a stopped run (same seed, same sites) and runs only the mutants it had not
-finished (the checks must not have changed in between).
+finished (those whose budget ran out included) (the checks must not have changed in between).
 """
 import argparse
 import concurrent.futures
@@ -533,7 +533,8 @@ def main():
             saved = json.load(open(done_path))
             if isinstance(saved, dict) and saved.get("seed") == a.seed:
                 want = {key(s) for s in chosen}
-                results = [r for r in saved["results"] if key(r) in want]
+                # a mutant whose budget ran out before every check ran is run again (with this run's budget)
+                results = [r for r in saved["results"] if key(r) in want and not r.get("unfinished")]
                 wall0 = saved.get("wall", 0)
         have = {key(r) for r in results}
         todo = [s for s in chosen if key(s) not in have]
