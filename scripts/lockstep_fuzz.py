@@ -272,7 +272,7 @@ def scene_text(build, seed, slot):
             lines.append(f"edge = {a} {b} {kind}{rest_e}")
     else:
         lines += ["[chain]", f"units = {build['M']}", f"nodes_per_unit = {build['K']}",
-                  f"start = {vec(start)}", f"step = {vec(step)}", f"rest = {rest:.6f}"]
+                  f"start = {vec(start)}", f"step = {vec(step)}", (f"rest = {rest:.6f}" if f"{rest:.6f}" != "0.000000" else f"rest = {rest:.10g}")]
     if pins:
         lines.append("pinned = " + " ".join(map(str, pins)))
     if rng.random() < 0.3 or slot == 1:  # the whole body starts moving
