@@ -291,7 +291,7 @@ test-docs: $(STRAND)
 
 # make formal: every task and every planted fault; rewrites the 'formal' region of docs/verification.md.
 formal: bootstrap
-	@python3 scripts/formal.py --faults --doc docs/verification.md
+	@python3 scripts/formal.py --faults --timeout 3600 --doc docs/verification.md
 
 # make test: a slice of the tasks (the short ones, every kind) and one planted fault of each
 # class of checker (arithmetic, handshake, miter, sequencer, AXI4-Lite, reset): ~1 min.

