@@ -48,8 +48,9 @@ static double now(void)
 }
 
 /*
- * Cycles per frame for what the RTL does not build yet (graphs, springs), an estimate on
- * the same datapath: a rod costs one `toward` sequence (SQRT_BITS + DIV_BITS + 9 cycles)
+ * Cycles per frame for a scene the RTL does not build (explicit Euler; a chain whose free
+ * nodes start at different velocities; hw_check says why), an estimate on the serial
+ * datapath, as if the body were a graph: a rod costs one `toward` sequence (SQRT_BITS + DIV_BITS + 9 cycles)
  * plus 5, as pair_sequencer does for a chain's link; a spring
  * costs a root, one signed divide per axis and 8 cycles of multiply-adds. The
  * Verlet pass and the pass overheads are the chain's (K + 2 per substep, 2 per pass).
