@@ -67,6 +67,32 @@ double stats_max_stretch(const scene *sc, double (*pos)[3])
     return worst;
 }
 
+void stats_strain(const scene *sc, double (*pos)[3], double *longer, double *shorter)
+{
+    *longer = *shorter = 0;
+    for (int e = 0; e < sc->n_edges; e++) {
+        const scene_edge *ed = &sc->edges[e];
+        double s = (dist3(pos[ed->a], pos[ed->b]) - ed->rest) / ed->rest * 100.0;
+        if (!(s <= *longer)) *longer = s;    /* NaN propagates */
+        if (!(-s <= *shorter)) *shorter = -s;
+    }
+}
+
+/* Keep the largest stretch and compression of the run, with their frames. */
+static void note_strain(const scene *sc, double (*pos)[3], int f, run_stats *st)
+{
+    double longer, shorter;
+    stats_strain(sc, pos, &longer, &shorter);
+    if (f <= 1 || !(longer <= st->max_longer)) {
+        st->max_longer = longer;
+        st->longer_frame = f;
+    }
+    if (f <= 1 || !(shorter <= st->max_shorter)) {
+        st->max_shorter = shorter;
+        st->shorter_frame = f;
+    }
+}
+
 static double gravity_norm(const scene *sc)
 {
     return sc->en_gravity ? sqrt(sc->gravity[0] * sc->gravity[0] + sc->gravity[1] * sc->gravity[1] + sc->gravity[2] * sc->gravity[2]) : 0;
@@ -147,14 +173,18 @@ bool run_scene(const scene *sc, number_kind kind, const fx_format *fmt, int fram
     ref = stats_lowest(sc, pos);
     st->energy0 = st->energy = stats_energy(sc, pos, vel, ref, &ke);
     st->ke_max = ke;
-    st->max_stretch = st->final_stretch = stats_max_stretch(sc, pos);
+    /* The scene as written (frame 0) is kept apart: the run's figures start at frame 1, as
+       `strand compare` and the lockstep harness count them (with no frame, frame 0's). */
+    st->initial_stretch = st->max_stretch = st->final_stretch = stats_max_stretch(sc, pos);
+    note_strain(sc, pos, 0, st);
     for (int f = 1; f <= frames; f++) {
         runner_frame(&r);
         runner_positions(&r, pos);
         runner_velocities(&r, vel);
         st->frames = f;
         double s = stats_max_stretch(sc, pos);
-        if (!(s <= st->max_stretch)) st->max_stretch = s;
+        if (f == 1 || !(s <= st->max_stretch)) st->max_stretch = s;
+        note_strain(sc, pos, f, st);
         st->energy = stats_energy(sc, pos, vel, ref, &ke);
         if (ke > st->ke_max) st->ke_max = ke;
         st->final_stretch = s;

@@ -33,6 +33,9 @@ long runner_fallbacks(const runner *r);
 
 /* Largest |l - rest| / rest over the constraint and spring edges, in percent (0 without edges). */
 double stats_max_stretch(const scene *sc, double (*pos)[3]);
+/* The same split by sign: the largest (len - rest) / rest of any edge (*longer) and the
+   largest (rest - len) / rest (*shorter), percent, each >= 0. */
+void stats_strain(const scene *sc, double (*pos)[3], double *longer, double *shorter);
 /* Kinetic + gravitational + spring energy of the free nodes. Heights are measured from ref_height. */
 double stats_energy(const scene *sc, double (*pos)[3], double (*vel)[3], double ref_height, double *kinetic);
 /* Height of the lowest free node along -gravity (the energy's zero), 0 without gravity. */
@@ -45,7 +48,11 @@ double stats_drift_pct(double energy0, double energy, double ke_max);
 
 typedef struct {
     int frames;
-    double max_stretch;   /* percent, over the whole run */
+    double max_stretch;   /* percent: the largest |len - rest| / rest of frames 1..frames */
+    double max_longer;    /* the largest (len - rest) / rest (a stretch), percent, same frames */
+    double max_shorter;   /* the largest (rest - len) / rest (a compression), percent */
+    int longer_frame, shorter_frame; /* the frames where they were reached */
+    double initial_stretch; /* the scene as written (frame 0), percent */
     double final_stretch; /* percent, at the last frame */
     double energy0, energy; /* at the start and the end */
     double drift;         /* energy - energy0 */

@@ -491,6 +491,10 @@ static int cmd_run(int argc, char **argv)
     printf("%s: %d frames, %s, %d nodes\n", sc.name, st.frames, format_name(kind, &sc.fmt, fmtbuf, sizeof fmtbuf), sc.n_nodes);
     printf("max stretch %.4f %% (final %.4f %%)   energy %.6g -> %.6g   drift %+.6g (%+.3f %%)\n", st.max_stretch, st.final_stretch,
            st.energy0, st.energy, st.drift, st.drift_pct);
+    if (sc.n_edges && st.frames > 0)
+        printf("  max stretch: the largest |length - rest| / rest of any link in frames 1..%d: longest %.4f %% over its\n"
+               "  rest (frame %d), shortest %.4f %% under it (frame %d); the scene as written (frame 0): %.4f %%\n",
+               st.frames, st.max_longer, st.longer_frame, st.max_shorter, st.shorter_frame, st.initial_stretch);
     if (!st.finite)
         printf("warning: values became non-finite at frame %d: the integration diverged\n", st.first_nonfinite);
     if (st.skipped) printf("corrections skipped for zero lengths: %ld\n", st.skipped);
