@@ -48,8 +48,9 @@ RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 help:
 	@echo "Strand make targets:"
 	@echo "  make test        install what is missing, then run every test (ends with 'N passed, N failed')"
-	@echo "  make sim [SCENE=...] [WAVES=1] [ORDER=redblack]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/); ORDER=redblack: a chain's pipelined passes"
-	@echo "  make wave [SCENE=...]  run make sim with WAVES=1 and open GTKWave on the trace"
+	@echo "  make sim [SCENE=...] [WAVES=1] [ORDER=redblack] [FRAMES=N]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/);"
+	@echo "                   progress every 5 s; ORDER=redblack: a chain's pipelined passes; FRAMES: that many frames, not the scene's"
+	@echo "  make wave [SCENE=...] [FRAMES=N]  run make sim with WAVES=1 and open GTKWave on the trace"
 	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
 	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=6]  random scenes in lockstep over every build class (N >= 3 x (3 + BUILDS)"
 	@echo "                   covers them all, whatever the seed; the run prints them); a failure prints its seed"
@@ -65,7 +66,7 @@ help:
 	@echo "  make bench       the core's physics throughput (both architectures) against one CPU core, and the"
 	@echo "                   harness's simulated cycles per second -> docs/performance.md (fmax from make synth)"
 	@echo "  make cpu-rope    build $(BUILD)/cpu_rope: a chain scene's frames in plain C, float or double, timed"
-	@echo "  make movie [SCENE=...]  an MP4 and a GIF of the scene's frames (build/movie/)"
+	@echo "  make movie [SCENE=...] [FRAMES=N]  an MP4 and a GIF of the scene's frames (build/movie/)"
 	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
 	@echo "  make test-stability  the hard cases in fixed and double (10^5 frames of most) and strand check's stability bound"
 	@echo "  make test-fuzz   replay the fuzz corpus and crash reproducers, a 45 s fuzz run, malformed scenes on the CLI"
@@ -129,7 +130,7 @@ run: bootstrap
 
 sim: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
-	@scripts/sim.sh $(SCENE) "$(if $(WAVES),--waves)" $(ORDER)
+	@FRAMES=$(FRAMES) scripts/sim.sh $(SCENE) "$(if $(WAVES),--waves)" $(ORDER)
 
 wave: bootstrap
 	@if [ -z "$$DISPLAY" ]; then echo "make wave: no display (DISPLAY is not set): GTKWave needs one; the trace alone: make sim SCENE=$(SCENE) WAVES=1" >&2; exit 1; fi
@@ -154,7 +155,7 @@ docs-sim: bootstrap
 
 movie: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
-	@scripts/movie.sh $(SCENE)
+	@FRAMES=$(FRAMES) scripts/movie.sh $(SCENE)
 
 # Simulation speed of the 4x5, 8x8 and 16x16 builds: lockstep, RTL alone, model alone.
 bench: bootstrap

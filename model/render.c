@@ -69,7 +69,8 @@ bool render_view_fit(render_view *v, const scene *sc, int frames)
     }
     double aspect = (v->xmax - v->xmin) / (v->ymax - v->ymin);
     v->width = 640;
-    v->height = (int)fmin(960, fmax(160, 640 / aspect));
+    /* an even height: H.264 in yuv420p wants even sizes, and padding drew a black bar */
+    v->height = 2 * (int)(fmin(960, fmax(160, 640 / aspect)) / 2);
     /* keep the scale equal on both axes: widen the short side */
     double sx = (v->xmax - v->xmin) / v->width, sy = (v->ymax - v->ymin) / v->height;
     if (sx > sy) {

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # bad_input_cli.sh STRAND - every malformed committed scene (tb/fuzz/corpus/bad_*) gets
 # "file:line: message" and exit status 2 from strand check and strand run, within 10 s,
-# and strand run --csv leaves neither the CSV nor its temporary file behind.
+# and strand run --csv leaves neither the CSV nor its temporary file behind; a bad FRAMES
+# for make sim and make movie stops before anything is built, with exit status 2.
 set -uo pipefail
 strand=$1
 cd "$(dirname "$0")/.."
@@ -19,5 +20,14 @@ for f in tb/fuzz/corpus/bad_*; do
     echo "FAIL bad input $f: strand run exit $rc, files left: $(ls "$tmp" | grep out | tr '\n' ' ')"; bad=$((bad + 1)); continue
   fi
 done
-[ "$bad" -eq 0 ] && echo "PASS bad input: $n malformed scenes: strand check and strand run --csv exit 2 with file:line: message, no output file"
+for script in sim movie; do
+  for frames in abc 0 -3 1e3; do
+    n=$((n + 1))
+    FRAMES=$frames timeout 10 scripts/$script.sh sim/scenes/ref000_rope.scene > /dev/null 2> "$tmp/err"; rc=$?
+    if [ "$rc" -ne 2 ] || ! grep -q "FRAMES must be a whole number" "$tmp/err"; then
+      echo "FAIL bad input FRAMES=$frames for $script.sh: exit $rc, stderr: $(head -1 "$tmp/err")"; bad=$((bad + 1))
+    fi
+  done
+done
+[ "$bad" -eq 0 ] && echo "PASS bad input: $n malformed inputs: scenes (strand check and strand run --csv exit 2 with file:line: message, no output file) and FRAMES of make sim and make movie (exit 2)"
 exit $((bad > 0))

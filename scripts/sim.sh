@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
 # sim.sh SCENE [--waves] [ORDER] - the main job: SCENE on the RTL in lockstep with the C model.
+# FRAMES (environment) runs that many frames instead of the scene's.
 #
 # Builds strand_core with exactly the scene's parameters and effects (cached), runs
 # it cycle for cycle against the cycle model, and writes into build/sim/<scene>/:
@@ -13,6 +14,10 @@ scene=$1
 waves=${2:-}
 order=${3:-}
 case "$order" in ""|serial|redblack) ;; *) echo "sim.sh: ORDER must be serial or redblack (not '$order')" >&2; exit 2;; esac
+frames=${FRAMES:-}
+if [ -n "$frames" ] && ! [[ "$frames" =~ ^[1-9][0-9]{0,7}$ ]]; then
+  echo "sim.sh: FRAMES must be a whole number of frames >= 1 (not '$frames')" >&2; exit 2
+fi
 build=${BUILD:-build}
 name=$(basename "$scene" .scene)
 out=$build/sim/$name
@@ -24,7 +29,7 @@ harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene" ${order:+--ord
 harness=$(realpath "$harness")
 scene_abs=$(realpath "$scene")
 out_abs=$(realpath "$out")
-args=(--csv "$out_abs/positions.csv" --png "$out_abs/final.png" ${order:+--order "$order"})
+args=(--csv "$out_abs/positions.csv" --png "$out_abs/final.png" --progress ${order:+--order "$order"} ${frames:+--frames "$frames"})
 if [ "$waves" = "--waves" ]; then
   python3 scripts/gtkw.py "$scene" "$out/strand.gtkw" waves.fst
   args+=(--trace "$out_abs/waves.fst")

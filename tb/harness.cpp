@@ -14,7 +14,7 @@
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
 //                [--expect-fault flip|delay|boundary|bypass|hazard] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
-//                [--quiet] [--as-built] [--order serial|redblack] [+verilator+rand+reset+2 +verilator+seed+N]
+//                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
 // makes a chain's build the pipelined one (ARCH = 1); the harness must be built so
@@ -22,6 +22,7 @@
 // --png-dir DIR draws every frame the RTL computed (make movie). --as-built runs the
 // model with the build's parameters where the scene would derive others (the effects
 // gating check: an effect switched off in the build, its registers still written).
+// --progress prints a line on stderr every 5 s (frame, cycles, rate): make sim passes it.
 // --mode rtl runs the RTL alone and --mode model the cycle model alone, on the same
 // stimulus (for make bench). --resets N asserts reset at N random cycles in the
 // middle of frames; the run then writes the setup again and starts the scene over,
@@ -65,6 +66,7 @@ struct Options {
     int frames = -1;
     uint64_t seed = 1;
     bool quiet = false;
+    bool progress = false; // a line on stderr every few seconds: frame, cycles, rate
     long stop_at = -1; // replay: stop after this cycle
 };
 
@@ -184,6 +186,9 @@ class Run {
     uint32_t mask_;
     long stop_at_;
     long cyc_ = 0;       // cycles run (edges)
+    bool progress_started_ = false, progress_printed_ = false;
+    std::chrono::steady_clock::time_point progress_t0_, progress_last_;
+    void progress(int done, int frames);
     bool compared_ = false; // outputs are compared from the first edge with reset on
     Result r_;
     int fault_writes_ = 0;
@@ -346,6 +351,24 @@ bool Run::setup(cyc_inputs &in) {
     return true;
 }
 
+// A progress line on stderr at most every PROGRESS_SECONDS of wall time (and at the last
+// frame once one was printed), so that a long run says how far it is.
+void Run::progress(int done, int frames) {
+    constexpr double PROGRESS_SECONDS = 5.0;
+    auto now = std::chrono::steady_clock::now();
+    if (!progress_started_) {
+        progress_t0_ = progress_last_ = now;
+        progress_started_ = true;
+    }
+    double since = std::chrono::duration<double>(now - progress_last_).count();
+    if (since < PROGRESS_SECONDS && !(done == frames && progress_printed_)) return;
+    double secs = std::chrono::duration<double>(now - progress_t0_).count();
+    std::fprintf(stderr, "  frame %d of %d (%.0f %%), %ld cycles, %.0f s, %.0f cycles/s\n", done, frames,
+                 100.0 * done / std::max(1, frames), cyc_, secs, secs > 0 ? cyc_ / secs : 0.0);
+    progress_last_ = now;
+    progress_printed_ = true;
+}
+
 Result Run::go(int frames) {
     cyc_inputs in{};
     if (!setup(in)) return r_;
@@ -405,6 +428,7 @@ Result Run::go(int frames) {
         if (r_.frame_cycles_min < 0 || len < r_.frame_cycles_min) r_.frame_cycles_min = len;
         if (len > r_.frame_cycles_max) r_.frame_cycles_max = len;
         r_.frames = f + 1;
+        if (o_.progress) progress(f + 1, frames);
         if (!model_on_) continue;
         sim_dbl_frame(&dbl);
         std::vector<double> frame_pos; // x, y, z of every node (z = 0 in 2D)
@@ -431,7 +455,7 @@ static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
                          "               [--expect-fault flip|delay|boundary|bypass|hazard] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
-                         "               [--order serial|redblack]\n"
+                         "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
 }
@@ -447,13 +471,20 @@ int main(int argc, char **argv) {
             }
             return argv[++i];
         };
-        if (a == "--frames") o.frames = std::atoi(value("--frames"));
+        if (a == "--frames") {
+            const char *v = value("--frames");
+            char *end = nullptr;
+            long n = std::strtol(v, &end, 10);
+            if (!*v || *end || n < 0 || n > 100000000L) return usage(("--frames wants a whole number of frames >= 0, not '" + std::string(v) + "'").c_str());
+            o.frames = (int)n;
+        }
         else if (a == "--seed") o.seed = std::strtoull(value("--seed"), nullptr, 0);
         else if (a == "--trace") o.trace = value("--trace");
         else if (a == "--csv") o.csv = value("--csv");
         else if (a == "--png") o.png = value("--png");
         else if (a == "--expect-fault") o.expect = value("--expect-fault");
         else if (a == "--quiet") o.quiet = true;
+        else if (a == "--progress") o.progress = true;
         else if (a == "--mode") o.mode = value("--mode");
         else if (a == "--png-dir") o.png_dir = value("--png-dir");
         else if (a == "--resets") o.resets = std::atoi(value("--resets"));
