@@ -40,7 +40,7 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-axil lockstep-fuzz formal test-formal \
+.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-axil lockstep-fuzz formal test-formal \
         lockstep-soak mutate \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
@@ -135,8 +135,8 @@ sim: bootstrap
 wave: bootstrap
 	@if [ -z "$$DISPLAY" ]; then echo "make wave: no display (DISPLAY is not set): GTKWave needs one; the trace alone: make sim SCENE=$(SCENE) WAVES=1" >&2; exit 1; fi
 	@$(MAKE) --no-print-directory -s sim WAVES=1
-	@if [ "$(SCENE)" = "sim/scenes/ref000_rope.scene" ]; then save=sim/strand.gtkw; else save=$(BUILD)/sim/$(basename $(notdir $(SCENE)))/strand.gtkw; fi; \
-	  echo "gtkwave $$save"; gtkwave --dump=$(BUILD)/sim/$(basename $(notdir $(SCENE)))/waves.fst --save=$$save
+	@d=$(BUILD)/sim/$(basename $(notdir $(SCENE))); echo "gtkwave $$d/waves.fst $$d/strand.gtkw"; \
+	  gtkwave --dump=$$d/waves.fst --save=$$d/strand.gtkw
 
 # The picture and summary README.md shows, from a make sim run of the default scene.
 docs-sim: bootstrap
@@ -180,6 +180,11 @@ HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 
 test-lockstep: $(STRAND) $(GEN_HDRS)
 	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 6 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
+
+# The traces make wave opens: save files name only signals the trace has, 10 ns a cycle,
+# no mouse stimulus without a mouse (three builds, two frames each).
+test-waves: $(STRAND) $(GEN_HDRS)
+	@tb/waves_check.sh
 
 lockstep-hard: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
@@ -302,7 +307,7 @@ FORMAL_FAULTS := sqrt_no_round div_restart_busy sqrt_pipe_big chain_seq_short_pa
 test-formal:
 	@python3 scripts/formal.py $(addprefix --only ,$(FORMAL_QUICK)) --faults $(FORMAL_FAULTS)
 
-TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-axil test-formal \
+TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-waves test-axil test-formal \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap

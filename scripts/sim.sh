@@ -5,7 +5,8 @@
 # Builds strand_core with exactly the scene's parameters and effects (cached), runs
 # it cycle for cycle against the cycle model, and writes into build/sim/<scene>/:
 # positions.csv (every frame end), final.png (the last frame), and with --waves an
-# FST trace and a GTKWave save file for it; a lockstep mismatch leaves mismatch.fst there.
+# FST trace (one clock cycle 10 ns) and a GTKWave save file written from it
+# (scripts/gtkw.py); a lockstep mismatch leaves mismatch.fst there.
 # ORDER (serial or redblack) replaces the scene's constraint order, as `strand run --order`
 # does: redblack builds a chain's pipelined passes (make sim ORDER=redblack).
 set -euo pipefail
@@ -31,8 +32,11 @@ scene_abs=$(realpath "$scene")
 out_abs=$(realpath "$out")
 args=(--csv "$out_abs/positions.csv" --png "$out_abs/final.png" --progress ${order:+--order "$order"} ${frames:+--frames "$frames"})
 if [ "$waves" = "--waves" ]; then
-  python3 scripts/gtkw.py "$scene" "$out/strand.gtkw" waves.fst
   args+=(--trace "$out_abs/waves.fst")
 fi
 (cd "$out" && "$harness" "$scene_abs" "${args[@]}")
+if [ "$waves" = "--waves" ]; then
+  # the save file is written from the trace's own signal list: only names this build has
+  python3 scripts/gtkw.py "$scene" "$out/strand.gtkw" "$out/waves.fst"
+fi
 echo "positions: $out/positions.csv   picture: $out/final.png${waves:+   trace: $out/waves.fst}"

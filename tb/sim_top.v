@@ -58,6 +58,32 @@ module sim_top #(
         .rd_addr(rd_addr), .rd_x(rd_x), .rd_y(rd_y), .rd_z(rd_z), .dbg(dbg));
     // the layout strand_core's header gives, LSB first
     assign {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} = dbg;
+
+    // The Q(W-F).F words as real numbers, for the trace only: GTKWave shows a real as a
+    // decimal (177.85, where the raw word reads 728484). Nothing reads them.
+    /* verilator lint_off UNUSEDSIGNAL */
+    localparam real ONE = 2.0 ** F;
+    real mouse_x_val, mouse_y_val, mouse_z_val, rd_x_val, rd_y_val, rd_z_val;
+    always @* begin
+        mouse_x_val = $itor($signed(mouse_x)) / ONE;
+        mouse_y_val = $itor($signed(mouse_y)) / ONE;
+        mouse_z_val = $itor($signed(mouse_z)) / ONE;
+        rd_x_val    = $itor($signed(rd_x)) / ONE;
+        rd_y_val    = $itor($signed(rd_y)) / ONE;
+        rd_z_val    = $itor($signed(rd_z)) / ONE;
+    end
+    genvar u;
+    generate
+        for (u = 0; u < M; u = u + 1) begin : g_lane
+            real wb_x_val, wb_y_val, wb_z_val;   // unit u's write-back lane
+            always @* begin
+                wb_x_val = $itor($signed(wb_x[u*W +: W])) / ONE;
+                wb_y_val = $itor($signed(wb_y[u*W +: W])) / ONE;
+                wb_z_val = $itor($signed(wb_z[u*W +: W])) / ONE;
+            end
+        end
+    endgenerate
+    /* verilator lint_on UNUSEDSIGNAL */
 endmodule
 
 `resetall
