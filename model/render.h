@@ -11,6 +11,9 @@ extern "C" {
 typedef struct {
     double xmin, ymin, xmax, ymax; /* projected bounds */
     int width, height;             /* pixels */
+    /* 3D: a perspective camera looking at `centre` from `distance` away (azimuth and
+       elevation fixed), and the box the body stays in over the run (the floor's extent) */
+    double centre[3], distance, lo[3], hi[3];
 } render_view;
 
 /* Fit the view to the whole run (a double-precision pre-pass over `frames` frames). */
