@@ -208,13 +208,20 @@ static void draw_floor(cairo_t *cr, const scene *sc, const render_view *v, doubl
     }
 }
 
-bool render_png(const scene *sc, const render_view *v, double (*pos)[3], int frame, const char *path)
+bool render_unproject(const scene *sc, const render_view *v, double px, double py, double *p)
 {
-    cairo_surface_t *surf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, v->width, v->height);
-    cairo_t *cr = cairo_create(surf);
+    if (sc->dim != 2) return false;
+    double u = v->xmin + px / v->width * (v->xmax - v->xmin);
+    double w = v->ymax - py / v->height * (v->ymax - v->ymin);
+    p[0] = u, p[1] = sc->y_down ? -w : w, p[2] = 0;
+    return true;
+}
+
+bool render_draw(void *cairo, const scene *sc, const render_view *v, double (*pos)[3], int frame)
+{
+    cairo_t *cr = cairo;
     double scale = v->width / (v->xmax - v->xmin);
     double node_r = fmax(2.0, fmin(5.0, 0.25 * stats_length_scale(sc) * scale));
-    cairo_status_t status;
     char label[96];
 
     cairo_set_source_rgb(cr, 1, 1, 1);
@@ -253,9 +260,7 @@ bool render_png(const scene *sc, const render_view *v, double (*pos)[3], int fra
     if (!order || !near) {
         free(order);
         free(near);
-        cairo_destroy(cr);
-        cairo_surface_destroy(surf);
-        fprintf(stderr, "strand: out of memory drawing %s\n", path);
+        fprintf(stderr, "strand: out of memory drawing frame %d\n", frame);
         return false;
     }
     for (int i = 0; i < sc->n_nodes; i++) {
@@ -284,7 +289,7 @@ bool render_png(const scene *sc, const render_view *v, double (*pos)[3], int fra
     }
     free(order);
     free(near);
-    if (sc->en_mouse) {
+    if (sc->en_mouse && !v->live_pointer) {
         double m[3], x, y;
         bool down;
         scene_mouse_at(sc, frame > 0 ? frame - 1 : 0, m, &down);
@@ -303,8 +308,15 @@ bool render_png(const scene *sc, const render_view *v, double (*pos)[3], int fra
     snprintf(label, sizeof label, "%s  frame %d", sc->name, frame);
     cairo_move_to(cr, 8, 16);
     cairo_show_text(cr, label);
+    return true;
+}
 
-    status = cairo_surface_write_to_png(surf, path);
+bool render_png(const scene *sc, const render_view *v, double (*pos)[3], int frame, const char *path)
+{
+    cairo_surface_t *surf = cairo_image_surface_create(CAIRO_FORMAT_RGB24, v->width, v->height);
+    cairo_t *cr = cairo_create(surf);
+    bool drawn = render_draw(cr, sc, v, pos, frame);
+    cairo_status_t status = drawn ? cairo_surface_write_to_png(surf, path) : CAIRO_STATUS_NO_MEMORY;
     cairo_destroy(cr);
     cairo_surface_destroy(surf);
     if (status != CAIRO_STATUS_SUCCESS) {

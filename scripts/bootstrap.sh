@@ -19,6 +19,7 @@ PACKAGES=(
   ccache                    # Verilator's runtime objects, compiled once for every harness build
   yosys nextpnr-ice40 fpga-icestorm  # synthesis reports, iCE40 place and route
   gtkwave                   # make wave
+  libsdl2-dev xvfb          # make demo (the window), and its test without a display
   ffmpeg                    # make movie
   hyperfine                 # make bench
   python3 python3-venv      # plots (matplotlib), cocotb and nextpnr-ecp5 in .venv

@@ -8,7 +8,8 @@
 # built the same way. ORDER (serial or redblack) replaces the scene's constraint order
 # (redblack: a chain's pipelined build). The binary is OUTDIR/harness; an unchanged build
 # is not rebuilt. HARNESS_OPT=fast compiles the C++ without optimisation (a build that
-# runs only a few frames, such as make mutate's: about half the compile time).
+# runs only a few frames, such as make mutate's: about half the compile time). DEMO=1
+# builds OUTDIR/demo instead (tb/demo.cpp, the harness's run with an SDL2 window: make demo).
 set -euo pipefail
 cd "$(dirname "$0")/.."
 scene=$1 out=$2 rtl=${3:-rtl} order=${4:-}
@@ -23,8 +24,12 @@ flock 9
 "$build/strand" hwgen "$scene" "$out.gen" --frames 1 ${order:+--order "$order"} >/dev/null
 # rebuild only when the build parameters or a source changed
 opt=${HARNESS_OPT:-}
-stamp="$(grep -v Generated "$out.gen/params.vh") $rtl $opt $(cat "$rtl"/*.v "$rtl"/*.vh "$build"/gen/*.vh tb/sim_top.v tb/harness.cpp "$build/libstrand.a" | md5sum)"
-if [ -x "$out/harness" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$stamp" ]; then exit 0; fi
+bin=harness main=tb/harness.cpp extra_cflags="" extra_libs=""
+if [ "${DEMO:-}" = 1 ]; then
+  bin=demo main=tb/demo.cpp extra_cflags="$(pkg-config --cflags sdl2) -I$root/tb" extra_libs="$(pkg-config --libs sdl2)"
+fi
+stamp="$(grep -v Generated "$out.gen/params.vh") $rtl $opt $bin $(cat "$rtl"/*.v "$rtl"/*.vh "$build"/gen/*.vh tb/sim_top.v tb/harness.cpp $main "$build/libstrand.a" | md5sum)"
+if [ -x "$out/$bin" ] && [ -f "$out/stamp" ] && [ "$(cat "$out/stamp")" = "$stamp" ]; then exit 0; fi
 cp "$out.gen/params.vh" "$out.gen/params.h" "$out/"
 rm -rf "$out/obj"
 # ccache (when installed) compiles Verilator's runtime (verilated*.cpp, the same for every
@@ -41,10 +46,10 @@ if [ "$opt" = fast ]; then
   cxxopt=-O0
 fi
 verilator --cc --exe --build -j 2 "${optflags[@]}" --trace-fst --x-assign unique --x-initial unique "${objcache[@]}" \
-  -Mdir "$out/obj" --top-module sim_top -o "$out/harness" \
+  -Mdir "$out/obj" --top-module sim_top -o "$out/$bin" \
   -I"$root/$build/gen" -I"$out" -I"$rtl" \
-  -CFLAGS "$cxxopt -I$root/model -I$root/$build/gen -I$out $(pkg-config --cflags inih cairo)" \
-  -LDFLAGS "$root/$build/libstrand.a $(pkg-config --libs inih cairo) -lm" \
-  "$root/tb/sim_top.v" $(for f in "$rtl"/*.v; do echo "$f"; done) "$root/tb/harness.cpp" >"$out/build.log" 2>&1 \
+  -CFLAGS "$cxxopt -I$root/model -I$root/$build/gen -I$out $(pkg-config --cflags inih cairo) $extra_cflags" \
+  -LDFLAGS "$root/$build/libstrand.a $(pkg-config --libs inih cairo) $extra_libs -lm" \
+  "$root/tb/sim_top.v" $(for f in "$rtl"/*.v; do echo "$f"; done) "$root/$main" >"$out/build.log" 2>&1 \
   || { cat "$out/build.log"; exit 1; }
 echo "$stamp" >"$out/stamp"

@@ -34,6 +34,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <functional>
 #include <cinttypes>
 #include <cmath>
 #include <cstdio>
@@ -147,6 +148,13 @@ class Run {
     }
 
     Result go(int frames);
+
+    // Live use (tb/demo.cpp): each frame's mouse comes from live_mouse instead of the
+    // scene's script, and frame_end sees every frame's positions (the model's, equal to
+    // the RTL's) and its cycles; returning false ends the run there.
+    std::function<void(int frame, double m[3], bool *down)> live_mouse;
+    std::function<bool(int frame, const std::vector<double> &pos, long frame_cycles)> frame_end;
+    long cycles() const { return cyc_; }
 
   private:
     // One cycle: present the inputs, compare the outputs, then the rising edge on both sides.
@@ -403,7 +411,8 @@ Result Run::go(int frames) {
         }
         double m[3];
         bool down;
-        scene_mouse_at(&sc_, scene_frame, m, &down);
+        if (live_mouse) live_mouse(scene_frame, m, &down);
+        else scene_mouse_at(&sc_, scene_frame, m, &down);
         noise(in);
         in.mouse_x = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[0]));
         in.mouse_y = hw_word(&sc_.fmt, fx_from_double(&sc_.fmt, m[1]));
@@ -450,6 +459,10 @@ Result Run::go(int frames) {
             std::snprintf(path, sizeof path, "%s/frame_%05d.png", o_.png_dir.c_str(), f + 1);
             render_png(&sc_, &view_, reinterpret_cast<double (*)[3]>(frame_pos.data()), f + 1, path);
         }
+        if (frame_end && !frame_end(f + 1, frame_pos, len)) {
+            r_.final_pos.push_back(frame_pos);
+            break;
+        }
         r_.final_pos.push_back(frame_pos);
         if (r_.final_pos.size() > 1 && o_.csv.empty()) r_.final_pos.erase(r_.final_pos.begin());
         dbl_err(dbl);
@@ -461,6 +474,7 @@ Result Run::go(int frames) {
 
 }  // namespace
 
+#ifndef STRAND_DEMO  // tb/demo.cpp includes this file for Run and has its own main
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
@@ -653,3 +667,4 @@ int main(int argc, char **argv) {
     scene_free(&sc);
     return 0;
 }
+#endif  // STRAND_DEMO
