@@ -40,7 +40,7 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-axil lockstep-fuzz formal test-formal \
+.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc test-axil lockstep-fuzz formal test-formal \
         lockstep-soak mutate \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
@@ -66,6 +66,7 @@ help:
 	@echo "  make bench       the core's physics throughput (both architectures) against one CPU core, and the"
 	@echo "                   harness's simulated cycles per second -> docs/performance.md (fmax from make synth)"
 	@echo "  make cpu-rope    build $(BUILD)/cpu_rope: a chain scene's frames in plain C, float or double, timed"
+	@echo "  make fusesoc     strand.core through FuseSoC/edalize: lint (Verilator), sim (Icarus frame bench), synth (Yosys, ECP5)"
 	@echo "  make demo [SCENE=...] [FMAX=MHz]  the RTL live in an SDL2 window, your mouse on its inputs, in lockstep with the C model"
 	@echo "  make movie [SCENE=...] [FRAMES=N]  an MP4 and a GIF of the scene's frames (build/movie/)"
 	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
@@ -164,6 +165,14 @@ demo: bootstrap
 	  DEMO=1 scripts/build_harness.sh $(DEMO_SCENE) $$d && \
 	  if [ -z "$$DISPLAY" ]; then echo "make demo: no display (DISPLAY is not set): run it on a desktop, or xvfb-run make demo" >&2; exit 1; fi && \
 	  $$d/demo $(DEMO_SCENE) $(if $(FMAX),--fmax $(FMAX))
+
+# strand.core through FuseSoC and edalize: lint, the frame bench, and (make fusesoc) synthesis.
+test-fusesoc: $(STRAND) $(GEN_HDRS)
+	@tb/fusesoc_check.sh
+
+fusesoc: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@tb/fusesoc_check.sh --synth
 
 # make demo's test: under Xvfb, a pointer through SDL's event queue grabs a node of a rope and
 # moves it; the node must end under the pointer with lockstep held (and an impulse scene runs).
@@ -324,7 +333,7 @@ FORMAL_FAULTS := sqrt_no_round div_restart_busy sqrt_pipe_big chain_seq_short_pa
 test-formal:
 	@python3 scripts/formal.py $(addprefix --only ,$(FORMAL_QUICK)) --faults $(FORMAL_FAULTS)
 
-TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-waves test-demo test-axil test-formal \
+TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-waves test-demo test-fusesoc test-axil test-formal \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap

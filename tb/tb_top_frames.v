@@ -22,7 +22,9 @@
  * frame_done, uidx, nidx, counter} over every cycle. It prints one PASS or FAIL line;
  * a FAIL names the frame, the node, the axis and both values (or the status that differs).
  */
-module tb_top_frames;
+module tb_top_frames #(
+    parameter HW_DIR = "."   // where `strand hwgen` wrote the .hex files (the FuseSoC sim target sets it)
+);
 `include "strand_params_scene_local.vh"
     localparam integer N = M * K;
     localparam integer FRAMES = `STRAND_FRAMES;
@@ -102,10 +104,10 @@ module tb_top_frames;
 
     initial begin
         errors = 0;
-        $readmemh("config.hex", config_mem);
-        $readmemh("mouse.hex", mouse_mem);
-        $readmemh("expected.hex", expect_mem);
-        $readmemh("status.hex", status_mem);
+        $readmemh({HW_DIR, "/config.hex"}, config_mem);
+        $readmemh({HW_DIR, "/mouse.hex"}, mouse_mem);
+        $readmemh({HW_DIR, "/expected.hex"}, expect_mem);
+        $readmemh({HW_DIR, "/status.hex"}, status_mem);
         if ($test$plusargs("trace")) begin
             $dumpfile("tb_top_frames.fst");
             $dumpvars(0, tb_top_frames);
