@@ -48,6 +48,9 @@ def trace_signals(fst):
             elif t[0] == "$var":
                 # $var TYPE SIZE ID NAME [RANGE] $end
                 rng = t[5] if len(t) > 6 and t[5].startswith("[") else ""
+                m = re.fullmatch(r"\[(\d+):(\d+)\]", rng)
+                if m and m.group(1) == m.group(2):
+                    rng = f"[{m.group(1)}]"   # GTKWave names a one-bit vector [n:n] as [n]
                 names.append(".".join(scope + [t[4]]) + rng)
             elif t[0] == "$enddefinitions":
                 p.kill()   # the header is all that is needed
@@ -76,7 +79,7 @@ def layout(p, names):
     def label(text):
         rows.append((None, BLANK, text))
 
-    num = r"(\[\d+:\d+\])?"
+    num = r"(\[\d+(:\d+)?\])?"
     label("clock, reset, inputs")
     sig(r"TOP\.clk", BIN | RJUSTIFY)
     sig(r"TOP\.reset", BIN | RJUSTIFY)
