@@ -512,7 +512,7 @@ def main():
                            stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
         return job, p.returncode, p.stdout
 
-    failed = 0
+    failed = passed = 0
     digests = {}
     covered = {}   # class -> scenes that covered it
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
@@ -530,7 +530,8 @@ def main():
                     print("\n".join(lines) or out)
                 continue
             if rc == 0:
-                print(lines[-1] if lines else f"PASS {label}")
+                passed += 1
+                print(lines[-1] if lines else f"PASS {label}", flush=True)
             else:
                 failed += 1
                 print("\n".join(lines[:12]) or out)
@@ -549,6 +550,7 @@ def main():
             print(f"{'note:' if a.partial else 'FAIL'} lockstep coverage: {len(seeds)} scenes on {len(builds)} builds missed "
                   f"{len(missing)} of {len(CLASSES)} classes: {', '.join(missing)}")
         else:
+            passed += 1
             print(f"PASS lockstep coverage: {len(seeds)} scenes on {len(builds)} builds covered every one of the "
                   f"{len(CLASSES)} classes (seed {a.seed}; the fewest scenes that do: {fewest})")
         if a.coverage_json:
@@ -562,6 +564,8 @@ def main():
         print(("PASS" if same else "FAIL") + f" reset defines everything: {len(digests) - 1} random-initialisation seeds and "
               f"zeros give {'the same' if same else 'different'} outputs in every cycle ({digests.get('reset-zero')})")
         failed += 0 if same else 1
+        passed += 1 if same else 0
+    print(f"lockstep: {passed} passed, {failed} failed")
     return 1 if failed else 0
 
 
