@@ -16,7 +16,8 @@
 // starts the scene again, q or Escape quits. The HUD shows the frame, the cycles of the
 // last frame, the simulated clock rate (cycles a second of RTL and model in lockstep on
 // this machine), the frame rate this build would reach at --fmax MHz (default 50: give
-// your build's figure from make synth), the largest stretch, and the lockstep status.
+// your build's figure from make synth), the largest stretch, the energy (heights above
+// the lowest start, velocities from the last frame's motion) and the lockstep status.
 //
 // --events FILE feeds SDL's own event queue: each line "FRAME X Y BUTTON" (pixels of the
 // window, BUTTON 1 held or 0 released) is pushed as a motion and a button event before
@@ -164,7 +165,8 @@ int main(int argc, char **argv) {
     int ptr_x = 0, ptr_y = 0;
     bool ptr_down = false, inj_down = false, quit = false, paused = false, step_one = false, restart = false;
     long frames_total = 0, cycles_total = 0, mismatch_cycle = -1;
-    std::vector<double> last_pos;
+    std::vector<double> last_pos, prev_pos;
+    double ref_height = 0;
     auto t_start = std::chrono::steady_clock::now();
 
     auto poll = [&]() {
@@ -206,14 +208,21 @@ int main(int argc, char **argv) {
             auto t_now = std::chrono::steady_clock::now();
             double secs = std::chrono::duration<double>(t_now - t_start).count();
             cycles_total = run.cycles();
-            double stretch = stats_max_stretch(&sc, reinterpret_cast<double (*)[3]>(const_cast<double *>(pos.data())));
+            double (*p3)[3] = reinterpret_cast<double (*)[3]>(const_cast<double *>(pos.data()));
+            double stretch = stats_max_stretch(&sc, p3);
+            // energy: heights above the lowest start, velocities from the last frame's motion
+            if (frame == 1) ref_height = stats_lowest(&sc, p3), prev_pos = pos;
+            std::vector<double> vel(pos.size());
+            for (size_t i = 0; i < pos.size(); i++) vel[i] = (pos[i] - prev_pos[i]) / sc.dt;
+            double ke = 0, energy = stats_energy(&sc, p3, reinterpret_cast<double (*)[3]>(vel.data()), ref_height, &ke);
+            prev_pos = pos;
             cairo_t *cr = cairo_create(surf);
             render_draw(cr, &sc, &view, reinterpret_cast<double (*)[3]>(const_cast<double *>(pos.data())), frame);
             char hud[4][160];
             std::snprintf(hud[0], sizeof hud[0], "cycles/frame %ld   simulated %.2f M cycles/s (RTL and model in lockstep)",
                           frame_cycles, secs > 0 ? cycles_total / secs / 1e6 : 0.0);
-            std::snprintf(hud[1], sizeof hud[1], "at %.0f MHz this build runs %.0f frames/s   stretch %.2f %%", fmax,
-                          fmax * 1e6 / std::max(1L, frame_cycles), stretch);
+            std::snprintf(hud[1], sizeof hud[1], "at %.0f MHz this build runs %.0f frames/s   stretch %.2f %%   energy %.4g", fmax,
+                          fmax * 1e6 / std::max(1L, frame_cycles), stretch, energy);
             std::snprintf(hud[2], sizeof hud[2], "lockstep: every output equal, %ld cycles   mouse %s%s", cycles_total,
                           STRAND_GRAB ? "grab" : "impulse", sc.dim == 3 ? " (3D: the scene's script)" : "");
             std::snprintf(hud[3], sizeof hud[3], "%sspace pause  n step  r restart  q quit", paused ? "PAUSED   " : "");
