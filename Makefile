@@ -18,7 +18,7 @@ GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh $(GEN)/strand_params.h $
 MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel -I$(GEN) $(DEP_CFLAGS)
 
 MODEL_SRC := model/fixed.c model/scene.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c \
-             model/hwgen.c model/timing.c model/cycle.c
+             model/hwgen.c model/timing.c model/cycle.c model/board.c
 MODEL_HDR := $(wildcard model/*.h)
 MODEL_OBJ := $(MODEL_SRC:model/%.c=$(BUILD)/model/%.o)
 MODEL_LIB := $(BUILD)/libstrand.a
@@ -40,7 +40,7 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc test-axil lockstep-fuzz formal test-formal \
+.PHONY: help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
         lockstep-soak mutate \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
@@ -66,6 +66,7 @@ help:
 	@echo "  make bench       the core's physics throughput (both architectures) against one CPU core, and the"
 	@echo "                   harness's simulated cycles per second -> docs/performance.md (fmax from make synth)"
 	@echo "  make cpu-rope    build $(BUILD)/cpu_rope: a chain scene's frames in plain C, float or double, timed"
+	@echo "  make bitstream [BOARD=icebreaker|ulx3s] [BOARD_SCENE=...]  a bitstream (rtl/boards/); then strand board --port DEV SCENE"
 	@echo "  make fusesoc     strand.core through FuseSoC/edalize: lint (Verilator), sim (Icarus frame bench), synth (Yosys, ECP5)"
 	@echo "  make demo [SCENE=...] [FMAX=MHz]  the RTL live in an SDL2 window, your mouse on its inputs, in lockstep with the C model"
 	@echo "  make movie [SCENE=...] [FRAMES=N]  an MP4 and a GIF of the scene's frames (build/movie/)"
@@ -173,6 +174,17 @@ test-fusesoc: $(STRAND) $(GEN_HDRS)
 fusesoc: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
 	@tb/fusesoc_check.sh --synth
+
+# A bitstream for a board (rtl/boards/), its core built for BOARD_SCENE; the host side is
+# `strand board --port DEV SCENE`. test-board: that path end to end in simulation.
+BOARD ?= icebreaker
+BOARD_SCENE ?= sim/scenes/board_rope.scene
+bitstream: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@scripts/bitstream.sh $(BOARD) $(BOARD_SCENE)
+
+test-board: $(STRAND) $(GEN_HDRS)
+	@tb/board_check.sh
 
 # make demo's test: under Xvfb, a pointer through SDL's event queue grabs a node of a rope and
 # moves it; the node must end under the pointer with lockstep held (and an impulse scene runs).
@@ -300,7 +312,12 @@ lint-rtl: $(GEN_HDRS) $(STRAND)
 	@sort -u $(BUILD)/lint-builds.all > $(BUILD)/lint-builds.txt  # (a pipe into sort would hide a refused build)
 	@while read -r g; do verilator --lint-only -Wall -I$(GEN) -Irtl $$g $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$g"; exit 1; }; done < $(BUILD)/lint-builds.txt
 	@out=$$(iverilog -Wall -g2005 -I$(GEN) -Irtl -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
-	@echo "lint-rtl: clean (verilator --lint-only -Wall on strand_core's defaults and $$(wc -l < $(BUILD)/lint-builds.txt) scene builds; iverilog -Wall)"
+	@$(STRAND) hwgen tb/scenes/chain_q10_8.scene $(BUILD)/lint-board --frames 1 >/dev/null
+	@for top in icebreaker_top ulx3s_top; do \
+	  verilator --lint-only -Wall -I$(GEN) -Irtl -I$(BUILD)/lint-board rtl/boards/*.v $(TOP_SRC) --top-module $$top || exit 1; \
+	  out=$$(iverilog -Wall -g2005 -I$(GEN) -Irtl -I$(BUILD)/lint-board -s $$top -o /dev/null rtl/boards/*.v $(TOP_SRC) 2>&1); \
+	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done
+	@echo "lint-rtl: clean (verilator --lint-only -Wall on strand_core's defaults, $$(wc -l < $(BUILD)/lint-builds.txt) scene builds and the board tops; iverilog -Wall)"
 
 lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
 
@@ -333,7 +350,7 @@ FORMAL_FAULTS := sqrt_no_round div_restart_busy sqrt_pipe_big chain_seq_short_pa
 test-formal:
 	@python3 scripts/formal.py $(addprefix --only ,$(FORMAL_QUICK)) --faults $(FORMAL_FAULTS)
 
-TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-waves test-demo test-fusesoc test-axil test-formal \
+TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units) test-rtl-frames test-lockstep test-waves test-demo test-fusesoc test-board test-axil test-formal \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap

@@ -16,6 +16,7 @@
 #include <sys/stat.h>
 
 #include "engine.h"
+#include "board.h"
 #include "hwgen.h"
 #include "render.h"
 #include "scene.h"
@@ -34,6 +35,7 @@ static const char *usage_main =
     "                   positions of a scene into DIR (for the testbenches)\n"
     "  info SCENE       the RTL build the scene needs: every core parameter, the derived\n"
     "                   widths and the cycle counts (--json for scripts)\n"
+    "  board --port DEV SCENE  run the scene on a board over its serial link (make bitstream)\n"
     "\n"
     "'strand COMMAND --help' describes each command's options.\n";
 
@@ -72,6 +74,11 @@ static const char *usage_hwgen = "usage: strand hwgen SCENE DIR [--frames N] [--
                                  "Write DIR/params.vh, config.hex, mouse.hex and expected.hex: what the RTL build\n"
                                  "and its frame-level testbench need for SCENE. Exit 2 if the RTL cannot run SCENE.\n";
 
+static const char *usage_board = "usage: strand board --port DEV SCENE [--frames N] [--csv FILE] [--hex FILE]\n"
+                                  "  Run the scene on a board (rtl/boards/: make bitstream BOARD=... SCENE=...) over\n"
+                                  "  its serial link DEV (a serial device, or a pseudo-terminal): load it, run the\n"
+                                  "  frames, read every node back after each. --csv as strand run --csv writes it;\n"
+                                  "  --hex the raw words, as strand run --hex (they compare byte for byte).\n";
 static const char *usage_info = "usage: strand info SCENE [--json | --vflags] [--order serial|redblack]\n"
                                 "Print the strand_core build SCENE needs (every parameter, as 'strand hwgen' derives it),\n"
                                 "its derived widths and its cycle counts (model/timing.c). With --json, one JSON object\n"
@@ -614,6 +621,62 @@ static int cmd_hwgen(int argc, char **argv)
     return 0;
 }
 
+static int cmd_board(int argc, char **argv)
+{
+    scene sc;
+    char err[SCENE_ERR_LEN];
+    const char *path = NULL, *port = NULL, *csv_path = NULL, *hex_path = NULL;
+    int frames = -1;
+    for (int i = 1; i < argc; i++) {
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage_board, stdout);
+            return 0;
+        } else if (!strcmp(argv[i], "--port") || !strcmp(argv[i], "--csv") || !strcmp(argv[i], "--hex")) {
+            if (i + 1 >= argc) return bad_arg("board", "%s needs a value", argv[i]);
+            const char **dst = !strcmp(argv[i], "--port") ? &port : !strcmp(argv[i], "--csv") ? &csv_path : &hex_path;
+            *dst = argv[++i];
+        } else if (!strcmp(argv[i], "--frames")) {
+            if (i + 1 >= argc || !parse_count(argv[i + 1], &frames))
+                return bad_arg("board", "--frames: '%s' is not a frame count (0..100000000)", i + 1 < argc ? argv[i + 1] : "");
+            i++;
+        } else if (argv[i][0] == '-') {
+            return bad_arg("board", "unknown option '%s'", argv[i]);
+        } else if (!path) {
+            path = argv[i];
+        } else {
+            return bad_arg("board", "unexpected argument '%s'", argv[i]);
+        }
+    }
+    if (!path || !port) return bad_arg("board", "%s", "needs --port DEV and SCENE");
+    if (!load(path, &sc, -1)) return EXIT_BAD_INPUT;
+    if (hw_check(&sc, err, sizeof err)) {
+        fprintf(stderr, "%s\n", err);
+        scene_free(&sc);
+        return EXIT_BAD_INPUT;
+    }
+    char csv_tmp[1100], hex_tmp[1100];
+    FILE *csv = NULL, *hex = NULL;
+    if (csv_path && !(csv = open_temp(csv_path, csv_tmp, sizeof csv_tmp))) {
+        scene_free(&sc);
+        return 1;
+    }
+    if (hex_path && !(hex = open_temp(hex_path, hex_tmp, sizeof hex_tmp))) {
+        close_temp(csv, csv_tmp, csv_path, false);
+        scene_free(&sc);
+        return 1;
+    }
+    if (csv) fprintf(csv, sc.dim == 3 ? "frame,node,x,y,z\n" : "frame,node,x,y\n");
+    int n = frames >= 0 ? frames : sc.frames;
+    bool ok = board_run(&sc, port, n, csv, hex, err, sizeof err);
+    if (!ok) fprintf(stderr, "strand board: %s\n", err);
+    if (csv && !close_temp(csv, csv_tmp, csv_path, ok)) ok = false;
+    if (hex && !close_temp(hex, hex_tmp, hex_path, ok)) ok = false;
+    if (ok) printf("%s: %d frames on the board at %s%s%s%s%s\n", sc.name, n, port, csv_path ? ", positions in " : "",
+                   csv_path ? csv_path : "", hex_path ? ", words in " : "", hex_path ? hex_path : "");
+    scene_free(&sc);
+    return ok ? 0 : 1;
+}
+
 static int cmd_info(int argc, char **argv)
 {
     scene sc;
@@ -697,6 +760,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "compare")) return cmd_compare(argc - 1, argv + 1);
     if (!strcmp(argv[1], "hwgen")) return cmd_hwgen(argc - 1, argv + 1);
     if (!strcmp(argv[1], "info")) return cmd_info(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "board")) return cmd_board(argc - 1, argv + 1);
     fprintf(stderr, "strand: unknown command '%s'\n%s", argv[1], usage_main);
     return EXIT_BAD_INPUT;
 }

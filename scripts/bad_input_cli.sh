@@ -29,5 +29,17 @@ for script in sim movie; do
     fi
   done
 done
-[ "$bad" -eq 0 ] && echo "PASS bad input: $n malformed inputs: scenes (strand check and strand run --csv exit 2 with file:line: message, no output file) and FRAMES of make sim and make movie (exit 2)"
+# strand board: no port (exit 2, a usage message), a port that does not exist (exit 1,
+# named), and no file left behind
+n=$((n + 1))
+timeout 10 "$strand" board sim/scenes/board_rope.scene > /dev/null 2> "$tmp/err"; rc=$?
+if [ "$rc" -ne 2 ] || ! grep -q "needs --port" "$tmp/err"; then
+  echo "FAIL bad input strand board without --port: exit $rc, stderr: $(head -1 "$tmp/err")"; bad=$((bad + 1))
+fi
+n=$((n + 1))
+timeout 10 "$strand" board --port "$tmp/no-such-port" sim/scenes/board_rope.scene --csv "$tmp/b.csv" > /dev/null 2> "$tmp/err"; rc=$?
+if [ "$rc" -ne 1 ] || ! grep -q "no-such-port" "$tmp/err" || [ -e "$tmp/b.csv" ] || [ -e "$tmp/b.csv.tmp" ]; then
+  echo "FAIL bad input strand board --port (missing): exit $rc, stderr: $(head -1 "$tmp/err")"; bad=$((bad + 1))
+fi
+[ "$bad" -eq 0 ] && echo "PASS bad input: $n malformed inputs: scenes (strand check and strand run --csv exit 2 with file:line: message, no output file), FRAMES of make sim and make movie (exit 2), strand board without a port or with a missing one"
 exit $((bad > 0))
