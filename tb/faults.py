@@ -84,7 +84,8 @@ def plant(name, out):
     rtl = os.path.join(ROOT, "rtl")
     os.makedirs(out, exist_ok=True)
     for f in os.listdir(rtl):
-        shutil.copyfile(os.path.join(rtl, f), os.path.join(out, f))
+        if os.path.isfile(os.path.join(rtl, f)):   # the core's files (rtl/boards/ is not part of it)
+            shutil.copyfile(os.path.join(rtl, f), os.path.join(out, f))
     for fname, pattern, repl in FAULTS[name]:
         path = os.path.join(out, fname)
         with open(path) as fh:
