@@ -237,7 +237,7 @@ lockstep-fuzz: bootstrap
 	@python3 scripts/lockstep_fuzz.py $(N) --seed $(SEED) --builds $(BUILDS)
 
 # Random scenes at scale (long, not in make test): SOAK_SCENES in chunks of SOAK_CHUNK, each chunk
-# a lockstep-fuzz run with its own seed and builds; resumable (build/soak/progress.json); writes
+# a lockstep-fuzz run with its own seed and builds; resumable (its record docs/lockstep_soak.json, kept per chunk); writes
 # the totals into docs/verification.md (region 'fuzz') after every chunk.
 SOAK_SCENES ?= 10000
 SOAK_CHUNK ?= 200

@@ -5,8 +5,11 @@ Random scenes in lockstep at scale: N scenes (default 10^4) in chunks of C (defa
 Chunk k is one run of scripts/lockstep_fuzz.py with seed S + k: its own B drawn builds (the
 planned ones of PLAN and B - 6 random ones, default B = 8) beside the three fixed ones, and
 C scenes on them, so every chunk covers every build class and the soak as a whole draws
-N / C x B builds. Progress is kept in build/soak/progress.json after every chunk; a run
-that is stopped goes on from the next chunk when started again (--restart forgets it).
+N / C x B builds. Progress is kept after every chunk in a record that the repository
+tracks (docs/lockstep_soak.json, --record), so that a soak stopped on one machine or
+checkout goes on from its next chunk on another (--restart forgets it). The record holds a
+digest of the sources a chunk ran on (rtl/, model/, the parameter table, the harness): a
+record made on other sources is of another design, and the soak starts again.
 Each chunk's log is build/soak/chunk_<seed>.log; a failing scene's replay command is in it.
 A chunk's own harnesses (those of its drawn builds that were not there before it) are
 removed when it ends (about 30 MB each); nothing else in build/vl is touched.
@@ -17,6 +20,7 @@ after every chunk, so that the page says how far the soak got.
 Prints a progress line per chunk and ends with a PASS or FAIL line.
 """
 import argparse
+import hashlib
 import json
 import os
 import re
@@ -32,6 +36,27 @@ VL = os.path.join(ROOT, BUILD, "vl")
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
 sys.dont_write_bytecode = True
 import lockstep_fuzz  # noqa: E402  (CLASSES, the classes every chunk covers)
+
+# what a chunk's verdict is about: the RTL the harness builds (not the board tops) with its
+# parameter table, the model it is compared with, and the harness that compares them. The
+# scripts that draw scenes are not in it: a scene that passed stays passed if they change.
+SOURCES = ["rtl", "model", "scripts/gen_params.py", "tb/harness.cpp", "tb/sim_top.v"]
+
+
+def sources_digest():
+    h = hashlib.sha256()
+    files = []
+    for src in SOURCES:
+        path = os.path.join(ROOT, src)
+        if os.path.isdir(path):
+            files += [os.path.join(src, f) for f in sorted(os.listdir(path))
+                      if os.path.isfile(os.path.join(path, f))]
+        else:
+            files.append(src)
+    for f in files:
+        with open(os.path.join(ROOT, f), "rb") as fh:
+            h.update(f.encode() + b"\0" + fh.read() + b"\0")
+    return h.hexdigest()[:16]
 
 
 def load(path):
@@ -54,7 +79,8 @@ def doc_table(p, total_wanted):
     hours = sum(c["seconds"] for c in chunks) / 3600
     lines = [f"`make lockstep-soak`: {scenes} of {total_wanted} random scenes run so far in {len(chunks)} chunks "
              f"(seeds {chunks[0]['seed']}..{chunks[-1]['seed']}), on {builds} builds drawn beside the three fixed ones, "
-             f"in {hours:.1f} h; {failed} failed." if chunks else "`make lockstep-soak`: no chunk has run yet.", ""]
+             f"in {hours:.1f} h; {failed} failed. Sources digest {p.get('sources')} (rtl/, model/, the harness: "
+             f"docs/lockstep_soak.json)." if chunks else "`make lockstep-soak`: no chunk has run yet.", ""]
     if chunks:
         lines += [f"Scenes per class (each chunk covers every one of the {len(lockstep_fuzz.CLASSES)}):", "",
                   "| class | what | scenes |", "|---|---|---|"]
@@ -75,17 +101,24 @@ def main():
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--first-seed", type=int, default=1001)
     ap.add_argument("--doc", help="write the totals into this file's region 'fuzz'")
+    ap.add_argument("--record", default=os.path.join("docs", "lockstep_soak.json"),
+                    help="the soak's record, kept after every chunk (default docs/lockstep_soak.json)")
     ap.add_argument("--restart", action="store_true", help="forget the progress and start from the first chunk")
     a = ap.parse_args()
     os.makedirs(SOAK, exist_ok=True)
-    prog_path = os.path.join(SOAK, "progress.json")
+    prog_path = os.path.join(ROOT, a.record)
     p = None if a.restart else load(prog_path)
+    digest = sources_digest()
     want = {"scenes": a.scenes, "chunk": a.chunk, "builds": a.builds, "first_seed": a.first_seed}
+    if p and p.get("sources") != digest:
+        print(f"lockstep-soak: {a.record} was made on other sources (digest {p.get('sources')}, now {digest}: "
+              f"{', '.join(SOURCES)} changed); starting again")
+        p = None
     if p and p.get("plan") != want:
-        print(f"lockstep-soak: build/soak/progress.json is of another soak ({p.get('plan')}); --restart starts this one")
+        print(f"lockstep-soak: {a.record} is of another soak ({p.get('plan')}); --restart starts this one")
         return 1
     if not p:
-        p = {"plan": want, "chunks": []}
+        p = {"plan": want, "sources": digest, "chunks": []}
     n_chunks = (a.scenes + a.chunk - 1) // a.chunk
     done = {c["seed"] for c in p["chunks"]}
     failed = sum(c["failed"] for c in p["chunks"])
@@ -114,6 +147,7 @@ def main():
         failed += fails
         with open(prog_path + ".tmp", "w") as fh:
             json.dump(p, fh, indent=1)
+            fh.write("\n")
         os.replace(prog_path + ".tmp", prog_path)
         # the chunk's own harnesses go: its builds' (from its coverage file) that were not there
         # before it, and not the fixed builds' (other runs may share build/vl)
