@@ -4,6 +4,8 @@
 # first, which installs what is missing (Debian packages, .venv) and nothing else.
 
 BUILD    ?= build
+# the scripts (scripts/strandflow) find make's build directory through the environment
+export BUILD
 CC       ?= cc
 PYTHON   := .venv/bin/python3
 JOBS     ?= 2

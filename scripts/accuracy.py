@@ -30,11 +30,11 @@ import sys
 import threading
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.environ.get("BUILD", "build")
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True
-import synth  # noqa: E402  (make synth's Yosys flow and stat readers: one flow for every report)
+import synth  # noqa: E402  (make synth's builds: the 4x5 at other formats)
+from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run, synth as flow_synth  # noqa: E402
+from strandflow.core import BUILD, ROOT, Failure, digest, file_digest, gen_files  # noqa: E402
 ADIR = os.path.join(BUILD, "accuracy")
 CACHE = os.path.join(ADIR, "cache")
 SWEEP = os.path.join(BUILD, "sweep")
@@ -345,8 +345,10 @@ def constants_of(p):
 
 def cycles_of_scene(path):
     """Cycles per frame of a scene's build, as the one formula (model/timing.c) gives them."""
-    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"], capture_output=True, text=True)
-    return json.loads(p.stdout)["timing"]["cycles_per_frame"] if p.returncode == 0 else None
+    try:
+        return flow_hwgen.info(path)["timing"]["cycles_per_frame"]
+    except (Failure, KeyError):
+        return None
 
 
 # ---- Yosys: cells of the 4x5 build ----
@@ -369,9 +371,9 @@ def synth_one(w, f, s, d, flow):
     gen = os.path.join(ROOT, BUILD, "gen")
     srcs = [os.path.join(ROOT, x) for x in RTL_SRC]
     prm = synth.params(synth.CHECK_CONFIG) + [("W", w), ("F", f), ("SQRT_BITS", s), ("DIV_BITS", d)]
-    text = synth.yosys_script(flow, prm, gen, srcs, f"the {synth.CHECK_CONFIG} build at W={w} F={f}")
-    text = "".join(ln + "\n" for ln in text.splitlines() if not ln.startswith("write_json"))
-    key = synth.digest(text, synth.file_digest(srcs + synth.gen_files(gen)))[:20]
+    title = f"the {synth.CHECK_CONFIG} build at W={w} F={f}"
+    text = flow_synth.yosys_script(flow, prm, gen, srcs, title)
+    key = digest(text, file_digest(srcs + gen_files(gen)))[:20]
     path = os.path.join(ROOT, CACHE, "synth_" + key + ".json")
     if os.path.exists(path):
         with open(path) as fh:
@@ -379,17 +381,15 @@ def synth_one(w, f, s, d, flow):
         r["cached"] = True
         return r
     d_ = os.path.join(ROOT, ADIR, "synth", key)
-    os.makedirs(d_, exist_ok=True)
-    with open(os.path.join(d_, f"{flow}.ys"), "w") as fh:
-        fh.write(text)
     t0 = time.time()
-    p = subprocess.run(["yosys", "-q", "-l", "yosys.log", f"{flow}.ys"], cwd=d_, capture_output=True, text=True)
-    r = dict(width=w, frac=f, sqrt_bits=s, div_bits=d, flow=flow, seconds=round(time.time() - t0, 1))
-    if p.returncode != 0:
-        r["error"] = "yosys failed: see " + os.path.join(d_, "yosys.log")
+    r = dict(width=w, frac=f, sqrt_bits=s, div_bits=d, flow=flow)
+    try:
+        flow_synth.yosys(d_, flow, prm, srcs, title, gen=gen)
+    except Failure as e:
+        r["error"] = str(e)
         return r
-    mods = synth.load_stat(os.path.join(d_, f"{flow}.stat.json"))
-    cells = synth.flat_counts(mods, synth.find_top(mods))
+    r["seconds"] = round(time.time() - t0, 1)
+    cells = flow_synth.cells(d_, flow)
     r["cells"] = sum(cells.values())
     if flow == "ice40":
         r["luts"] = cells.get("SB_LUT4", 0)
@@ -435,16 +435,18 @@ def rtl_sample(p):
     with open(scene_file, "w") as fh:
         fh.write(derive(p))
     r = dict(point=p)
-    b = subprocess.run([sys.executable if False else "python3", "scripts/lockstep_fuzz.py", "--harness-for", scene_file],
-                       cwd=ROOT, capture_output=True, text=True)
-    if b.returncode != 0:
-        r["error"] = "harness build failed: " + (b.stderr.strip().splitlines() or ["?"])[-1]
+    try:
+        info = flow_hwgen.info(scene_file)
+        if not info["rtl"]:
+            raise Failure(info["why"])
+        exe = flow_build.harness_for(scene_file, flow_build.harness_dir(info["params"]))
+    except Failure as e:
+        r["error"] = f"harness build failed: {e}"
         return r
-    h = subprocess.run([b.stdout.strip(), scene_file, "--frames", "2"], cwd=ROOT, capture_output=True, text=True)
-    m = re.search(r"cycles per frame\s+(\d+)", h.stdout)
-    r["lockstep_pass"] = h.returncode == 0 and h.stdout.startswith("PASS")
-    r["measured"] = int(m.group(1)) if m else None
-    r["summary"] = (h.stdout.strip().splitlines() or [""])[0]
+    rc, out = flow_run.harness(exe, scene_file, ["--frames", "2"])
+    r["lockstep_pass"] = rc == 0 and out.startswith("PASS")
+    r["measured"] = flow_run.parse(out)["cycles_per_frame"]
+    r["summary"] = (out.strip().splitlines() or [""])[0]
     with open(path, "w") as fh:
         json.dump(r, fh)
     return r

@@ -23,15 +23,14 @@ import os
 import platform
 import re
 import statistics
-import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.environ.get("BUILD", "build")
-sys.path.insert(0, os.path.join(ROOT, "scripts"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True
 import synth  # noqa: E402  (make synth's results: the fmax of a build)
+from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run  # noqa: E402
+from strandflow.core import BUILD, ROOT, Failure, run  # noqa: E402
 
 BUILDS = ["4x5", "8x8", "16x16"]
 PHYS_BUILDS = ["4x5", "8x8", "16x16", "8x128"]
@@ -48,16 +47,28 @@ TARGET = 2.0
 
 
 def sh(cmd):
-    p = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    if p.returncode != 0:
-        sys.stdout.write(p.stdout)
+    rc, out = run(cmd)
+    if rc != 0:
+        sys.stdout.write(out)
         raise SystemExit(f"bench: {' '.join(cmd)} failed")
-    return p.stdout
+    return out
 
 
 def harness_for(scene, order=None):
-    cmd = ["python3", "scripts/lockstep_fuzz.py", "--harness-for", scene] + (["--order", order] if order else [])
-    return sh(cmd).strip().splitlines()[-1]
+    """The harness of the scene's build (in build/vl/, shared with make test's lockstep)."""
+    try:
+        info = flow_hwgen.info(scene, order)
+        if not info["rtl"]:
+            raise Failure(f"{scene}: {info['why']}")
+        return flow_build.harness_for(scene, flow_build.harness_dir(info["params"]), order=order)
+    except Failure as e:
+        raise SystemExit(f"bench: {e}")
+
+
+def rtl_figures(scene, frames, order):
+    """The harness's counters of a run of the RTL alone (run.parse's keys)."""
+    return flow_run.parse(sh([harness_for(scene, order), scene, "--frames", str(frames), "--mode", "rtl",
+                              "--order", order]))
 
 
 def fmax_of(name):
@@ -83,11 +94,9 @@ def physics():
         scene = f"tb/bench/bench_{b}.scene"
         m, k = (int(x) for x in b.split("x"))
         for arch, order, suffix in ARCHS:
-            harness = harness_for(scene, order)
-            text = sh([harness, scene, "--frames", str(PHYS_FRAMES), "--mode", "rtl", "--order", order])
-            cyc = int(re.search(r"cycles per frame\s+(\d+)", text).group(1))
-            u = re.search(r"constraint updates\s+(\d+) per frame: ([\d.]+) per clock over the frame, ([\d.]+) per clock in", text)
-            upf, per_clock, per_clock_c = int(u.group(1)), float(u.group(2)), float(u.group(3))
+            f = rtl_figures(scene, PHYS_FRAMES, order)
+            cyc, upf, per_clock, per_clock_c = (f["cycles_per_frame"], f["updates_per_frame"], f["updates_per_clock"],
+                                                f["updates_per_clock_passes"])
             mhz, mhz_text = fmax_of(b + suffix)
             cpu_d, flags = cpu_rate(scene, order, "double")
             cpu_f, _ = cpu_rate(scene, order, "float")
@@ -132,8 +141,7 @@ def rope(rows):
     cyc = []
     for it in (1, 2):
         path = write_variant(scene, it, f"rope_iter{it}")
-        text = sh([harness_for(path, "redblack"), path, "--frames", "3", "--mode", "rtl", "--order", "redblack"])
-        cyc.append(int(re.search(r"cycles per frame\s+(\d+)", text).group(1)))
+        cyc.append(rtl_figures(path, 3, "redblack")["cycles_per_frame"])
     per_iter, rest = cyc[1] - cyc[0], 2 * cyc[0] - cyc[1]
 
     def stretch(iters):
@@ -177,10 +185,8 @@ def springs():
         scene = f"tb/bench/springs_{b}.scene"
         m, k = (int(x) for x in b.split("x"))
         for arch, order, _ in ARCHS:
-            text = sh([harness_for(scene, order), scene, "--frames", "3", "--mode", "rtl", "--order", order])
-            cyc = int(re.search(r"cycles per frame\s+(\d+)", text).group(1))
-            u = re.search(r"spring updates\s+(\d+) per frame: ([\d.]+) per clock", text)
-            per_clock = float(u.group(2))
+            f = rtl_figures(scene, 3, order)
+            cyc, per_clock = f["cycles_per_frame"], f["springs_per_clock"]
             lines.append(f"| {b} | {arch} | {m * k - 1} | {cyc} | {per_clock:.4f} ({per_clock / m:.3f} M) |")
             print(f"bench springs {b} {arch}: {cyc} cycles/frame, {per_clock:.4f} spring updates/clock", flush=True)
     return lines

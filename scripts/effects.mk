@@ -20,7 +20,7 @@ EFFECTS_SAVED_GOAL := $(.DEFAULT_GOAL)
 
 EFFECTS_JOBS ?= $(if $(JOBS),$(JOBS),2)
 EFFECTS_PY   := $(if $(PYTHON),$(PYTHON),.venv/bin/python3) scripts/effects.py
-EFFECTS_ARGS  = --build $(BUILD)/effects --gen $(GEN) --strand $(STRAND) --lib $(MODEL_LIB) --jobs $(EFFECTS_JOBS)
+EFFECTS_ARGS  = --build $(BUILD)/effects --jobs $(EFFECTS_JOBS)
 
 .PHONY: effects test-effects
 

