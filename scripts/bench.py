@@ -2,8 +2,8 @@
 """bench.py - the core's physics throughput against a CPU, and simulation speed, written to
 docs/performance.md (make bench).
 
-Physics throughput: for the 4x5, 8x8, 16x16 and 8x128 builds (tb/bench/bench_<build>.scene)
-in both architectures (serial: the scene's order; pipelined: --order redblack), the
+Physics throughput: for the 4x5, 8x8, 16x16 and 8x128 builds (tb/bench/bench_<build>.scene,
+and the same scene with the pairwise rule) in both architectures (serial: the scene's order; pipelined: --order redblack), the
 Verilator harness runs the RTL alone and counts the cycles of each frame and of its
 constraint passes; the constraint updates of a frame (node updates of the centred rule)
 divided by them are the updates per clock. The ECP5-85F fmax is the median of make synth's
@@ -34,6 +34,7 @@ from strandflow.core import BUILD, ROOT, Failure, run  # noqa: E402
 
 BUILDS = ["4x5", "8x8", "16x16"]
 PHYS_BUILDS = ["4x5", "8x8", "16x16", "8x128"]
+RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene with rule = pairwise
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
 SPRING_BUILDS = ["4x5", "8x128"]  # tb/bench/springs_<build>.scene: chains of springs
@@ -90,29 +91,30 @@ def physics():
     """Rows of the throughput table, the rope figures and notes (as markdown lines)."""
     rows = []
     flags = ""
-    for b in PHYS_BUILDS:
-        scene = f"tb/bench/bench_{b}.scene"
+    for b, rule in [(b, rule) for rule in RULES for b in PHYS_BUILDS]:
+        scene = f"tb/bench/bench_{b}.scene" if rule == "centred" else rule_variant(f"tb/bench/bench_{b}.scene", rule)
         m, k = (int(x) for x in b.split("x"))
         for arch, order, suffix in ARCHS:
             f = rtl_figures(scene, PHYS_FRAMES, order)
             cyc, upf, per_clock, per_clock_c = (f["cycles_per_frame"], f["updates_per_frame"], f["updates_per_clock"],
                                                 f["updates_per_clock_passes"])
-            mhz, mhz_text = fmax_of(b + suffix)
+            # make synth places the centred builds only (another rule is another build)
+            mhz, mhz_text = fmax_of(b + suffix) if rule == "centred" else (None, "not placed")
             cpu_d, flags = cpu_rate(scene, order, "double")
             cpu_f, _ = cpu_rate(scene, order, "float")
             hw = per_clock * mhz * 1e6 if mhz else None
-            rows.append(dict(build=b, arch=arch, nodes=m * k, m=m, cycles=cyc, upf=upf, per_clock=per_clock,
+            rows.append(dict(build=b, rule=rule, arch=arch, nodes=m * k, m=m, cycles=cyc, upf=upf, per_clock=per_clock,
                              per_clock_c=per_clock_c, mhz=mhz, mhz_text=mhz_text, hw=hw, cpu_d=cpu_d, cpu_f=cpu_f))
-            print(f"bench {b} {arch}: {cyc} cycles/frame, {per_clock:.4f} updates/clock, fmax {mhz_text}, "
+            print(f"bench {b} {rule} {arch}: {cyc} cycles/frame, {per_clock:.4f} updates/clock, fmax {mhz_text}, "
                   f"CPU {cpu_d / 1e6:.1f} M/s double, {cpu_f / 1e6:.1f} M/s float", flush=True)
     mega = lambda v: f"{v / 1e6:.2f}" if v is not None else "-"
-    lines = ["| build | architecture | nodes | cycles per frame (RTL) | updates per clock, whole frame | "
+    lines = ["| build | rule | architecture | nodes | cycles per frame (RTL) | updates per clock, whole frame | "
              "updates per clock in the constraint passes (of M) | fmax ECP5-85F, MHz (median) | updates/s at fmax, M | "
              "CPU double, M/s | CPU float, M/s | core / CPU double |",
-             "|---|---|---|---|---|---|---|---|---|---|---|"]
+             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         ratio = f"**{r['hw'] / r['cpu_d']:.2f}x**" if r["hw"] else "-"
-        lines.append(f"| {r['build']} | {r['arch']} | {r['nodes']} | {r['cycles']} | {r['per_clock']:.4f} | "
+        lines.append(f"| {r['build']} | {r['rule']} | {r['arch']} | {r['nodes']} | {r['cycles']} | {r['per_clock']:.4f} | "
                      f"{r['per_clock_c']:.4f} ({r['per_clock_c'] / r['m']:.3f} M) | {r['mhz_text']} | {mega(r['hw'])} | "
                      f"{mega(r['cpu_d'])} | {mega(r['cpu_f'])} | {ratio} |")
     notes = ["", f"CPU: `{flags}`, one core, the same scene in the same order; its double frames are the frame "
@@ -134,7 +136,7 @@ def physics():
 def rope(rows):
     """The 1024-node rope at 60 frames per second: the clock each iteration count needs on the
     pipelined build, the stretch it reaches, and the iterations it fits at its fmax if placed."""
-    r = next(x for x in rows if x["build"] == ROPE and x["arch"] == "pipelined")
+    r = next(x for x in rows if x["build"] == ROPE and x["arch"] == "pipelined" and x["rule"] == "centred")
     scene = f"tb/bench/bench_{ROPE}.scene"
     # the cycles of one constraint iteration and of the rest of a frame, measured with 1 and 2
     # iterations (the iteration count is a build parameter: a harness for each)
@@ -192,6 +194,19 @@ def springs():
     return lines
 
 
+def rule_variant(scene, rule):
+    """scene with its constraint rule replaced, written under build/bench/."""
+    name = os.path.basename(scene).replace(".scene", f"_{rule}.scene")
+    out = os.path.join(BUILD, "bench", name)
+    os.makedirs(os.path.join(ROOT, BUILD, "bench"), exist_ok=True)
+    text, n = re.subn(r"^rule = \w+$", f"rule = {rule}", open(os.path.join(ROOT, scene)).read(), flags=re.M)
+    if n != 1:
+        raise SystemExit(f"bench: {scene} names no constraint rule to replace")
+    with open(os.path.join(ROOT, out), "w") as f:
+        f.write(text)
+    return out
+
+
 def write_variant(scene, iterations, name):
     """scene with `iterations` constraint iterations per substep, written under build/bench/."""
     out = os.path.join(BUILD, "bench", f"{name}.scene")
@@ -245,12 +260,15 @@ def main():
              "different runs.", "",
              "## Physics throughput: the core against one CPU core", "",
              "Constraint updates are node updates of the centred rule (each node moved to the mean of its two "
-             "targets: two distance evaluations), counted over every iteration of every substep of the benchmark "
+             "targets: two distance evaluations) or link updates of the pairwise rule (one distance evaluation, "
+             "both ends moved), counted over every iteration of every substep of the benchmark "
              "scenes (`tb/bench/bench_<build>.scene`: a rope of M x K nodes, Q16.16 with full-precision root and "
-             "divide, gravity, the mouse, one iteration). *Serial* is the reference-000 sequencer (one distance "
+             "divide, gravity, the mouse, one iteration; the pairwise rows run the same scene with `rule = "
+             "pairwise`, another build, which make synth does not place). *Serial* is the reference-000 sequencer (one distance "
              "datapath for the whole body, the scene's order); *pipelined* is ARCH = 1 (the red/black order, every "
              "unit streaming its nodes through its own toward_pipe: one distance evaluation a clock per unit, so its "
-             "ceiling is 0.5 x M node updates a clock, less the pipeline's drain at every colour switch). Cycles are "
+             "ceiling is 0.5 x M updates a clock (centred: a node takes two evaluations; pairwise: a sweep's K + 1 "
+             "slots carry the K / 2 links of its colour), less the pipeline's drain at every colour switch). Cycles are "
              "counted by the harness on the RTL (Verilator, RTL alone); updates/s = updates per clock over whole "
              "frames x fmax.", "",
              *phys, "",
