@@ -1,11 +1,12 @@
 #!/usr/bin/env python3
 """lockstep_soak.py [--scenes N] [--chunk C] [--builds B] [--jobs J] [--first-seed S] [--doc FILE] [--restart]
 
-Random scenes in lockstep at scale: N scenes (default 10^4) in chunks of C (default 200).
+Random scenes in lockstep at scale: N scenes (default 10^4) in chunks of C (default 1000).
 Chunk k is one run of scripts/lockstep_fuzz.py with seed S + k: its own B drawn builds (the
-planned ones of PLAN and B - 6 random ones, default B = 8) beside the three fixed ones, and
+planned ones of PLAN and B - 6 random ones, default B = 12) beside the three fixed ones, and
 C scenes on them, so every chunk covers every build class and the soak as a whole draws
-N / C x B builds. Progress is kept after every chunk in a record that the repository
+N / C x B builds. A scene runs in a few hundredths of a second and a build takes about a
+minute, so a chunk's cost is its builds: C sets how many scenes each build gets. Progress is kept after every chunk in a record that the repository
 tracks (docs/lockstep_soak.json, --record), so that a soak stopped on one machine or
 checkout goes on from its next chunk on another (--restart forgets it). The record holds a
 digest of the sources a chunk ran on (rtl/, model/, the parameter table, the harness): a
@@ -96,8 +97,8 @@ def doc_table(p, total_wanted):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scenes", type=int, default=10000)
-    ap.add_argument("--chunk", type=int, default=200)
-    ap.add_argument("--builds", type=int, default=8)
+    ap.add_argument("--chunk", type=int, default=1000)
+    ap.add_argument("--builds", type=int, default=12)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--first-seed", type=int, default=1001)
     ap.add_argument("--doc", help="write the totals into this file's region 'fuzz'")
