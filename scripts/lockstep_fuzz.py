@@ -199,6 +199,12 @@ def probe_params(build):
     return scene_info(path)
 
 
+def length(x):
+    """A length as a scene line writes it: six decimals, or ten significant digits where six
+    decimals would write 0 (a rest below 5e-7, at a wide fraction such as F = 26)."""
+    return f"{x:.6f}" if f"{x:.6f}" != "0.000000" else f"{x:.10g}"
+
+
 def scene_text(build, seed, slot):
     """A valid scene for `build`, its run-time values drawn from `seed`: a chain or a graph, 2D or 3D.
     slot (the scene's rank among its build's scenes) forces a class: 0 a pinned rod end, 1 a rod end
@@ -268,12 +274,14 @@ def scene_text(build, seed, slot):
         lines += ["[graph]"]
         lines += [f"node = {vec(p)}" for p in nodes]
         for a, b, kind in edges:
-            # coincident nodes have no initial distance: their rest length is given
-            rest_e = f" {rng.uniform(0.5, 1.5) * rest:.6f}" if rng.random() < 0.5 or slot == 2 else ""
+            # coincident nodes have no initial distance: their rest length is given (also where
+            # the ends are apart by less than the digits written: a short rest at a wide fraction)
+            given = rng.random() < 0.5 or slot == 2 or vec(nodes[a]) == vec(nodes[b])
+            rest_e = f" {length(rng.uniform(0.5, 1.5) * rest)}" if given else ""
             lines.append(f"edge = {a} {b} {kind}{rest_e}")
     else:
         lines += ["[chain]", f"units = {build['M']}", f"nodes_per_unit = {build['K']}",
-                  f"start = {vec(start)}", f"step = {vec(step)}", (f"rest = {rest:.6f}" if f"{rest:.6f}" != "0.000000" else f"rest = {rest:.10g}")]
+                  f"start = {vec(start)}", f"step = {vec(step)}", f"rest = {length(rest)}"]
     if pins:
         lines.append("pinned = " + " ".join(map(str, pins)))
     if rng.random() < 0.3 or slot == 1:  # the whole body starts moving
@@ -417,6 +425,8 @@ def main():
     ap.add_argument("--order", choices=["serial", "redblack"], help="with --harness-for: the build of SCENE in this order")
     ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
     ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
+    ap.add_argument("--scenes-only", action="store_true",
+                    help="write the N scenes and check that 'strand info' derives each one's build; build and run nothing")
     a = ap.parse_args()
 
     if a.harness_for:
@@ -482,6 +492,9 @@ def main():
         jobs.append((label, [path, "--quiet", "--seed", str(s), "--resets", str(2 if slot % 3 == 0 else 0),
                              "+verilator+rand+reset+2", f"+verilator+seed+{s % 100000 + 1}"], params, "", ""))
 
+    if a.scenes_only:
+        print(f"PASS lockstep scenes: {len(seeds)} scenes of seed {a.seed} written to {fuzz}/, each its build's")
+        return 0
     # one harness per build (cached by build_harness.sh), built two at a time
     needed = {}
     for label, args, build, fault, order in jobs:
