@@ -179,7 +179,10 @@ fusesoc: bootstrap
 	@tb/fusesoc_check.sh --synth
 
 # A bitstream for a board (rtl/boards/), its core built for BOARD_SCENE; the host side is
-# `strand board --port DEV SCENE`. test-board: that path end to end in simulation.
+# `strand board --port DEV SCENE`. test-board: that path end to end in simulation, after the
+# serial link alone on line faults (tb/tb_uart.v: baud off by 3 %, framing errors, a break,
+# glitches, the bridge's slave error and bad command).
+BOARD_UART := rtl/boards/uart_rx.v rtl/boards/uart_tx.v rtl/boards/uart_axil_bridge.v
 BOARD ?= icebreaker
 BOARD_SCENE ?= sim/scenes/board_rope.scene
 bitstream: bootstrap
@@ -187,6 +190,8 @@ bitstream: bootstrap
 	@scripts/bitstream.sh $(BOARD) $(BOARD_SCENE)
 
 test-board: $(STRAND) $(GEN_HDRS)
+	@mkdir -p $(BUILD)
+	@iverilog -Wall -g2012 -o $(BUILD)/tb_uart tb/tb_uart.v $(BOARD_UART) && vvp -n $(BUILD)/tb_uart
 	@tb/board_check.sh
 
 # make demo's test: under Xvfb, a pointer through SDL's event queue grabs a node of a rope and

@@ -4,10 +4,11 @@
 /*
  * uart_rx - an 8N1 serial receiver (the host link of the board tops).
  *
- * Algorithm: the line idles high. A falling edge starts a frame; the line is sampled in
- * the middle of the start bit (CLKS_PER_BIT / 2 cycles later: a start bit no longer
- * low there is a glitch and is dropped), then in the middle of each of the 8 data bits
- * (LSB first) and of the stop bit. A frame whose stop bit is high gives valid for one
+ * Algorithm: the line idles high. A falling edge (high one cycle, low the next, so that
+ * a line still low after a framing error or in a break starts nothing) starts a frame;
+ * the line is sampled in the middle of the start bit (CLKS_PER_BIT / 2 cycles later: a
+ * start bit no longer low there is a glitch and is dropped), then in the middle of each
+ * of the 8 data bits (LSB first) and of the stop bit. A frame whose stop bit is high gives valid for one
  * cycle with data; a low stop bit (a framing error) gives nothing. The input passes two
  * flip-flops first (it comes from another clock domain).
  * Latency: valid comes 9.5 bit times after the start edge. Throughput: one byte a frame.
@@ -26,19 +27,21 @@ module uart_rx #(
     localparam integer  HALF_I = CLKS_PER_BIT / 2, FULL_I = CLKS_PER_BIT - 1;
     localparam [CW-1:0] HALF = HALF_I[CW-1:0], FULL = FULL_I[CW-1:0];
     reg [1:0]    sync;                 // the two synchronising flip-flops
+    reg          line_q;               // the line a cycle ago: a start is a falling edge
     reg [CW-1:0] count;
     reg [3:0]    bit_idx;              // 0: start bit, 1..8: data, 9: stop
     reg          busy;
     wire         line = sync[1];
     always @(posedge clk) begin
-        sync  <= reset ? 2'b11 : {sync[0], rx};
+        sync   <= reset ? 2'b11 : {sync[0], rx};
+        line_q <= reset ? 1'b1 : line;
         valid <= 1'b0;
         if (reset) begin
             busy    <= 1'b0;
             count   <= {CW{1'b0}};
             bit_idx <= 4'd0;
         end else if (!busy) begin
-            if (!line) begin           // a start edge: wait half a bit
+            if (!line && line_q) begin // a start edge: wait half a bit
                 busy    <= 1'b1;
                 count   <= HALF;
                 bit_idx <= 4'd0;
