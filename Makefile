@@ -57,7 +57,7 @@ help:
 	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=6]  random scenes in lockstep over every build class (N >= 3 x (3 + BUILDS)"
 	@echo "                   covers them all, whatever the seed; the run prints them); a failure prints its seed"
 	@echo "  make lockstep-hard  every hard case the RTL supports, in lockstep (sim/scenes/hard_*.scene)"
-	@echo "  make lockstep-soak [SOAK_SCENES=10000] [SOAK_CHUNK=1000] [SOAK_BUILDS=12]  random scenes in lockstep at scale, in chunks"
+	@echo "  make lockstep-soak [SOAK_SCENES=10000] [SOAK_CHUNK=2000] [SOAK_BUILDS=12]  random scenes in lockstep at scale, in chunks"
 	@echo "                   (each its own seed and builds, every class); resumable; totals -> docs/verification.md"
 	@echo "  make mutate [MUTANTS=120] [MUTATE_SEED=1] [MUTATE_BUDGET=300]  mutants of rtl/ through the fast checks:"
 	@echo "                   the score, by check, and the survivors -> docs/verification.md (30-60 min on 2 cores)"
@@ -247,7 +247,7 @@ lockstep-fuzz: bootstrap
 # a lockstep-fuzz run with its own seed and builds; resumable (its record docs/lockstep_soak.json, kept per chunk); writes
 # the totals into docs/verification.md (region 'fuzz') after every chunk.
 SOAK_SCENES ?= 10000
-SOAK_CHUNK ?= 1000
+SOAK_CHUNK ?= 2000
 SOAK_BUILDS ?= 12
 lockstep-soak: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)

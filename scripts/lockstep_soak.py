@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """lockstep_soak.py [--scenes N] [--chunk C] [--builds B] [--jobs J] [--first-seed S] [--doc FILE] [--restart]
 
-Random scenes in lockstep at scale: N scenes (default 10^4) in chunks of C (default 1000).
+Random scenes in lockstep at scale: N scenes (default 10^4) in chunks of C (default 2000).
 Chunk k is one run of scripts/lockstep_fuzz.py with seed S + k: its own B drawn builds (the
 planned ones of PLAN and B - 6 random ones, default B = 12) beside the three fixed ones, and
 C scenes on them, so every chunk covers every build class and the soak as a whole draws
@@ -97,7 +97,7 @@ def doc_table(p, total_wanted):
 def main():
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument("--scenes", type=int, default=10000)
-    ap.add_argument("--chunk", type=int, default=1000)
+    ap.add_argument("--chunk", type=int, default=2000)
     ap.add_argument("--builds", type=int, default=12)
     ap.add_argument("--jobs", type=int, default=2)
     ap.add_argument("--first-seed", type=int, default=1001)
