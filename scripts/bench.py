@@ -7,8 +7,8 @@ and the same scene with the pairwise rule) in both architectures (serial: the sc
 Verilator harness runs the RTL alone and counts the cycles of each frame and of its
 constraint passes; the constraint updates of a frame (node updates of the centred rule)
 divided by them are the updates per clock. The ECP5-85F fmax is the median of make synth's
-nextpnr runs of the same build (build/synth/; "not placed" where make synth has not placed
-it). In the same run, build/cpu_rope (model/cpu_rope.c, -O3, one core) runs the same scene
+nextpnr runs of the same build (build/synth/, or make synth's record docs/synth_record.json
+when it holds them for the same RTL; "not placed" where make synth has not placed it). In the same run, build/cpu_rope (model/cpu_rope.c, -O3, one core) runs the same scene
 in the same order in double and in float, timed; its double frames are the frame engine's
 bit for bit (make test checks it). Then the 1024-node rope (8x128, pipelined): the clock
 that 60 frames per second need at each iteration count, the stretch the frame engine
@@ -220,6 +220,10 @@ def write_variant(scene, iterations, name):
 
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "docs/performance.md"
+    os.chdir(ROOT)  # the RTL sources by the names make gives them (they are part of synth's keys)
+    missing = synth.restore(os.path.join(BUILD, "synth"), os.path.join(BUILD, "gen"), synth.rtl_sources())
+    print(f"bench: make synth's results for this RTL taken from build/synth and its record "
+          f"({missing} step(s) not run for it)", flush=True)
     phys = physics()
     rows = []
     for b in BUILDS:

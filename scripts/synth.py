@@ -9,8 +9,8 @@ Run from the repository root (tb/synth.mk does):
     synth.py check --build DIR --gen GENDIR -- SRC...
         the quick check: the generic flow of the 4x5 build only (synth, check -assert,
         no latches); prints one line, PASS or FAIL, and exits non-zero on FAIL.
-    synth.py report --build DIR --gen GENDIR --out FILE
-        write FILE from the cached results only.
+    synth.py report --build DIR --gen GENDIR --out FILE [SRC...]
+        write FILE from the cached results only (with SRC, first those the record holds).
 
 What is built: strand_core with the defaults of the parameter table (build/gen/
 strand_params.json: Q16.16, a full-precision root and divider, the centred rule,
@@ -25,15 +25,20 @@ registers so that any pin count fits): nextpnr-ecp5 (the project's .venv, from P
 an LFE5U-85F, nextpnr-ice40 (Debian) on an iCE40 UP5K, each with the seeds SEEDS lists; fmax is
 nextpnr's post-route figure for the clock.
 
-Each build keeps its raw files in DIR/<build>/: <flow>.ys, <flow>.log, <flow>.stat.json,
-<flow>.ok (a stamp with a hash of the commands, the tool version and the sources), and
-for place and route <family>.json (the netlist) and pnr_<family>_s<seed>.log / .ok. A
-step runs again only when its stamp is missing or holds another hash.
+Every step's result is also kept in docs/synth_record.json (tracked, keyed by content: see
+scripts/strandflow/synth.py), and a step whose result is there for the same sources is not
+run again: so `make synth` on a fresh checkout of unchanged RTL rewrites FILE in seconds, and
+make bench reads the fmax from it. Each build keeps its raw files in DIR/<build>/:
+<flow>.ys, <flow>.log, <flow>.stat.json, <flow>.ok (a stamp with a hash of the commands,
+the tool version and the sources), and for place and route <family>.json (the netlist)
+and pnr_<family>_s<seed>.log / .ok. A step runs again only when its stamp is missing or
+holds another hash, and the record has no result for it.
 
 Standard library only.
 """
 import argparse
 import concurrent.futures
+import glob
 import json
 import os
 import re
@@ -44,11 +49,11 @@ import time
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
-from strandflow.core import Failure  # noqa: E402
+from strandflow.core import ROOT, Failure  # noqa: E402
 from strandflow.hwgen import param_table, table_defaults  # noqa: E402
 from strandflow.synth import (CORE_FLOWS, ECP5_ARGS, ICE40_ARGS, SYNTH_CMDS, find_top, flat_counts,  # noqa: E402
                               generic_classes, hierarchy_rows, load_stat, nextpnr_short, place, pnr_cmd, yosys,
-                              PNR_TOP, TOP)
+                              PNR_TOP, TOP, Record)
 
 # name: (changes to the table's defaults, where it is placed). DEBUG = 0 for all.
 BUILDS = [
@@ -76,7 +81,7 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # nextpnr: the others have twice its units or more (synth_ecp5 alone takes 10 to 25 minutes
 # each, place and route two hours or more), so they get generic cells only, and the report
 # gives the multipliers they would need from the 4x5's per unit.
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": []}
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [1]}
 # Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
 # pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
 # router was still resolving some 124,000 overused wires after 25 minutes of routing here.
@@ -113,12 +118,35 @@ def full_params(build, gen):
     return p
 
 
-def run_flow(build, flow, bdir, gen, srcs):
-    return yosys(os.path.join(bdir, build), flow, params(build), srcs, f"build {build}", gen=gen)
+def run_flow(build, flow, bdir, gen, srcs, record=None, offline=False, real=False):
+    seeds = (seeds_of(build) if flow == "ecp5_place" else SEEDS) if flow.endswith("_place") else ()
+    return yosys(os.path.join(bdir, build), flow, params(build), srcs, f"build {build}", gen=gen, record=record,
+                 pnr_seeds=seeds, offline=offline, real=real)
 
 
-def run_pnr(build, family, seed, bdir):
-    return place(os.path.join(bdir, build), family, seed, build)
+def run_pnr(build, family, seed, bdir, record=None, offline=False):
+    return place(os.path.join(bdir, build), family, seed, build, record=record, offline=offline)
+
+
+def rtl_sources():
+    """rtl/*.v as make's TOP_SRC names them (run from the repository root)."""
+    return sorted(os.path.relpath(p, ROOT) for p in glob.glob(os.path.join(ROOT, "rtl", "*.v")))
+
+
+def restore(bdir, gen, srcs, record=None):
+    """Take every step's result the record holds for these sources into bdir (nothing runs);
+    the number of steps still missing."""
+    record = record or Record()
+    missing = 0
+    for b, _, placed in BUILDS:
+        for f in flows_of(b):
+            missing += run_flow(b, f, bdir, gen, srcs, record, offline=True) == "missing"
+        for family in ("ecp5", "ice40"):
+            if not os.path.exists(os.path.join(bdir, b, f"{family}_place.ok")):
+                continue
+            for s in (seeds_of(b) if family == "ecp5" else SEEDS):
+                missing += run_pnr(b, family, s, bdir, record, offline=True) == "missing"
+    return missing
 
 
 # ---- place and route ----
@@ -255,8 +283,8 @@ def report(bdir, gen, out):
       f"register to register), nextpnr-ecp5 `{' '.join(ECP5_ARGS)}`, seed(s) {', '.join(map(str, SEEDS))}"
       + (f" ({'; '.join(b + ': ' + (', '.join(map(str, v)) or 'not placed') for b, v in SERIAL_SEEDS.items())})"
          if SERIAL_SEEDS else "") + ". "
-      f"fmax is nextpnr's post-route figure for `clk` (the goal is 100 MHz); DPR16X4 is LUT RAM "
-      f"(16 words x 4 bits), DP16KD block RAM.")
+      "fmax is nextpnr's post-route figure for `clk` (the goal is 100 MHz); DPR16X4 is LUT RAM "
+      "(16 words x 4 bits), DP16KD block RAM.")
     w("")
     w("| build | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD | fmax per seed, MHz | median |")
     w("|---|--:|--:|--:|--:|--:|--:|---|---|--:|")
@@ -465,6 +493,7 @@ def cmd_all(a):
         raise Failure("no RTL sources given")
     lock = threading.Lock()
     failures = []
+    record = Record()
 
     def say(msg):
         with lock:
@@ -472,7 +501,7 @@ def cmd_all(a):
 
     def flow_task(build, flow):
         try:
-            st = run_flow(build, flow, a.build, a.gen, srcs)
+            st = run_flow(build, flow, a.build, a.gen, srcs, record)
             say(f"synth {build:15s} {flow:12s} {st}")
         except Failure as e:
             failures.append(str(e))
@@ -480,7 +509,7 @@ def cmd_all(a):
 
     def pnr_task(build, family, seed):
         try:
-            st = run_pnr(build, family, seed, a.build)
+            st = run_pnr(build, family, seed, a.build, record)
             say(f"synth {build:15s} {'pnr ' + family + ' s' + str(seed):12s} {st}")
             return st
         except Failure as e:
@@ -522,7 +551,7 @@ def cmd_all(a):
 
 def cmd_check(a):
     try:
-        run_flow(CHECK_CONFIG, "generic", a.build, a.gen, a.srcs)
+        run_flow(CHECK_CONFIG, "generic", a.build, a.gen, a.srcs, real=True)
         mods = load_stat(os.path.join(a.build, CHECK_CONFIG, "generic.stat.json"))
         total = sum(flat_counts(mods, find_top(mods)).values())
     except Failure as e:
@@ -546,6 +575,7 @@ def main():
     s.add_argument("--build", default="build/synth")
     s.add_argument("--gen", default="build/gen")
     s.add_argument("--out", default="docs/resources.md")
+    s.add_argument("srcs", nargs="*", help="the RTL sources: with them, the record's results for them first")
     s = sub.add_parser("pnr", help="place and route one build whose place flow is done (a make synth run "
                                    "beside it waits for the result instead of placing it again)")
     s.add_argument("name")
@@ -559,9 +589,11 @@ def main():
                 raise Failure(f"no build named {a.name} (the builds: {', '.join(BUILD_MAP)})")
             if not os.path.exists(os.path.join(a.build, a.name, f"{a.family}_place.ok")):
                 raise Failure(f"{a.name}: its {a.family}_place flow has not run (make synth runs it)")
-            print(f"synth {a.name} pnr {a.family} s{a.seed}: {run_pnr(a.name, a.family, a.seed, a.build)}")
+            print(f"synth {a.name} pnr {a.family} s{a.seed}: {run_pnr(a.name, a.family, a.seed, a.build, Record())}")
             return 0
         if a.cmd == "report":
+            if a.srcs:
+                restore(a.build, a.gen, a.srcs)
             total, met = report(a.build, a.gen, a.out)
             print(f"wrote {a.out}")
             return 0

