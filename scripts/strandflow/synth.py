@@ -19,6 +19,7 @@ result from the record when the keys agree, so a fresh checkout of unchanged RTL
 synth's figures without hours of Yosys and nextpnr, and a long run stopped half-way keeps
 what it finished. A *_place flow is taken from the record only when every seed of its place
 and route is there too (nextpnr needs the netlist, which the record does not keep)."""
+import hashlib
 import json
 import os
 import re
@@ -140,7 +141,13 @@ def portable_key(ys, ver, files, gen):
         return "<gen>" + path[len(gen):] if path.startswith(gen + os.sep) else os.path.relpath(path, ROOT)
 
     text = ys.replace(gen, "<gen>").replace(ROOT, "<root>")
-    sums = [digest(rel(f), file_digest([f])) for f in files]
+    sums = []
+    for f in files:
+        try:
+            with open(f, "rb") as fh:
+                sums.append(digest(rel(f), hashlib.sha256(fh.read()).hexdigest()))
+        except OSError as e:
+            raise Failure(f"cannot read {e.filename}: {e.strerror}")
     return digest(text, ver, *sums)
 
 
