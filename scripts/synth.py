@@ -44,6 +44,7 @@ import os
 import re
 import statistics
 import sys
+import tempfile
 import threading
 import time
 
@@ -53,7 +54,7 @@ from strandflow.core import ROOT, Failure  # noqa: E402
 from strandflow.hwgen import param_table, table_defaults  # noqa: E402
 from strandflow.synth import (CORE_FLOWS, ECP5_ARGS, ICE40_ARGS, SYNTH_CMDS, find_top, flat_counts,  # noqa: E402
                               generic_classes, hierarchy_rows, load_stat, nextpnr_short, place, pnr_cmd, yosys,
-                              PNR_TOP, TOP, Record)
+                              PNR_SRC, PNR_TOP, TOP, Record)
 
 # name: (changes to the table's defaults, where it is placed). DEBUG = 0 for all.
 BUILDS = [
@@ -553,12 +554,40 @@ def cmd_check(a):
     try:
         run_flow(CHECK_CONFIG, "generic", a.build, a.gen, a.srcs, real=True)
         mods = load_stat(os.path.join(a.build, CHECK_CONFIG, "generic.stat.json"))
-        total = sum(flat_counts(mods, find_top(mods)).values())
+        counts = flat_counts(mods, find_top(mods))
+        total = sum(counts.values())
+        record_note = check_record(a, counts)
     except Failure as e:
         print(f"FAIL synth-check: {e}")
         return 1
-    print(f"PASS synth-check ({CHECK_CONFIG}: {total} generic cells, check -assert, no latches)")
+    print(f"PASS synth-check ({CHECK_CONFIG}: {total} generic cells, check -assert, no latches; {record_note})")
     return 0
+
+
+def check_record(a, counts):
+    """The record on the result just made: kept in a scratch record and taken back into an empty
+    directory with the same counts, refused for other sources; and docs/synth_record.json, if it
+    holds this build for these sources, gives the same counts as Yosys did now."""
+    with tempfile.TemporaryDirectory() as tmp:
+        scratch = Record(os.path.join(tmp, "record.json"))
+        run_flow(CHECK_CONFIG, "generic", a.build, a.gen, a.srcs, scratch)
+        got = run_flow(CHECK_CONFIG, "generic", os.path.join(tmp, "a"), a.gen, a.srcs, scratch, offline=True)
+        back = load_flow(os.path.join(tmp, "a"), CHECK_CONFIG, "generic")["counts"]
+        if got != "from the record" or back != counts:
+            raise Failure(f"the record did not give the result back ({got})")
+        other = run_flow(CHECK_CONFIG, "generic", os.path.join(tmp, "b"), a.gen, list(a.srcs) + [PNR_SRC],
+                         scratch, offline=True)
+        if other != "missing":
+            raise Failure(f"the record gave a result for other sources ({other})")
+        tracked = Record()
+        got = run_flow(CHECK_CONFIG, "generic", os.path.join(tmp, "c"), a.gen, a.srcs, tracked, offline=True)
+        if got == "missing":
+            return f"record: kept, taken back, refused for other sources; {os.path.relpath(tracked.path, ROOT)} " \
+                   "holds no result for these sources"
+        if load_flow(os.path.join(tmp, "c"), CHECK_CONFIG, "generic")["counts"] != counts:
+            raise Failure(f"{os.path.relpath(tracked.path, ROOT)}: its {CHECK_CONFIG} generic cells differ from "
+                          "Yosys's now, for the same sources")
+    return f"record: kept, taken back, refused for other sources; {os.path.relpath(tracked.path, ROOT)} agrees"
 
 
 def main():

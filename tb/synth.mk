@@ -10,9 +10,14 @@
 # (tb/pnr_wrap.v) with nextpnr-ecp5 (LFE5U-85F, from the project's .venv) and
 # nextpnr-ice40 (UP5K), the seeds synth.py lists, SYNTH_JOBS at a time; then docs/resources.md
 # is rewritten from the results. Raw logs and netlists stay in $(BUILD)/synth/<build>/;
-# a step whose inputs are unchanged (by content) is not run again. A latch or a failed
-# `check -assert` fails the target; a build that does not fit a device does not.
-# test-synth-check prints one line, "PASS synth-check (...)" or "FAIL synth-check: ...".
+# a step whose inputs are unchanged (by content) is not run again, nor one whose result
+# the tracked record docs/synth_record.json holds for the same inputs (make synth keeps
+# every result there). A latch or a failed `check -assert` fails the target; a build that
+# does not fit a device does not.
+# test-synth-check runs Yosys itself (a recorded result does not count), then checks the
+# record on its result (kept, taken back, refused for other sources) and that
+# docs/synth_record.json, if it holds that build for these sources, agrees with it.
+# It prints one line, "PASS synth-check (...)" or "FAIL synth-check: ...".
 # All variables are prefixed SYNTH_ (BUILD, GEN, TOP_SRC and JOBS come from the top
 # Makefile when it includes this file).
 
