@@ -78,10 +78,10 @@ MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every ta
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
-# on the 4x5 pipelined build takes most of an hour). Only the 4x5 goes through synth_ecp5 and
-# nextpnr: the others have twice its units or more (synth_ecp5 alone takes 10 to 25 minutes
-# each, place and route two hours or more), so they get generic cells only, and the report
-# gives the multipliers they would need from the 4x5's per unit.
+# on the 4x5 pipelined build takes most of an hour). The 4x5 and the 8x128 (the largest that
+# fits: 8 units of 16 MULT18X18D of the 156) go through synth_ecp5 and nextpnr; the 8x8 (the
+# 8x128's units, fewer nodes) and the 16x16 (256 MULT18X18D) get generic cells only, and the
+# report gives the multipliers they would need from the 4x5's per unit.
 PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [1]}
 # Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
 # pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
@@ -310,12 +310,19 @@ def report(bdir, gen, out):
     if placed_pipe:
         b0 = placed_pipe[0]
         per_unit = pick(res[b0]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / BUILD_MAP[b0][0]["M"]
+    unplaced_pipe = [b for b in PIPE if not seeds_of(b)]
+
+    def pnr_minutes(b):
+        return ", ".join(f"{r['seconds'] / 60:.0f} min" for r in pnr[b]["ecp5"] if r.get("seconds"))
+
     w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
-      "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical); the "
-      + (f"{', '.join(placed_pipe)} also through synth_ecp5 and nextpnr-ecp5 as above, one seed (a run takes most of "
-         "an hour here). " if placed_pipe else "")
-      + "The larger ones get generic cells only: synth_ecp5 alone takes 10 to 25 minutes each here, place and "
-      "route two hours or more. The ECP5-85F has 156 MULT18X18D, which bounds the units that fit"
+      "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical); "
+      + (", ".join(f"{b} (place and route: {pnr_minutes(b)})" for b in placed_pipe)
+         + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. " if placed_pipe else "")
+      + (f"{', '.join(unplaced_pipe)}: generic cells only (a place and route of the WebAssembly nextpnr-ecp5 "
+         "takes an hour or more here; the 8x8 has the units of the 8x128, the 16x16 more multipliers than the "
+         "device has). " if unplaced_pipe else "")
+      + "The ECP5-85F has 156 MULT18X18D, which bounds the units that fit"
       + (f": the placed build's toward_pipes take {per_unit:g} a unit (two squares and two products of 32 x 32 bits), "
          f"so at most {int(156 // per_unit)} units fit; the last column gives M x {per_unit:g} for each build."
          if per_unit else "."))
