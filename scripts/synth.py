@@ -78,11 +78,16 @@ MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every ta
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
-# on the 4x5 pipelined build takes most of an hour). The 4x5 and the 8x128 (the largest that
-# fits: 8 units of 16 MULT18X18D of the 156) go through synth_ecp5 and nextpnr; the 8x8 (the
-# 8x128's units, fewer nodes) and the 16x16 (256 MULT18X18D) get generic cells only, and the
-# report gives the multipliers they would need from the 4x5's per unit.
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [1]}
+# on the 4x5 pipelined build takes most of an hour). The 4x5 goes through synth_ecp5 and
+# nextpnr; the 8x8 (the 8x128's units, fewer nodes) and the 16x16 (256 MULT18X18D) get
+# generic cells only, and the report gives the multipliers they would need from the 4x5's
+# per unit.
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": []}
+# Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
+# but not placed: the 8x128 fills most of the device, and placing it with the WebAssembly
+# nextpnr-ecp5 did not get past the analytical placer's first iteration in 12 minutes here
+# (its routing would come after).
+PIPE_PACK = ["8x128_pipe"]
 # Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
 # pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
 # router was still resolving some 124,000 overused wires after 25 minutes of routing here.
@@ -91,6 +96,11 @@ SERIAL_SEEDS = {"16x16": []}
 
 def seeds_of(build):
     return PIPE_SEEDS.get(build, SERIAL_SEEDS.get(build, SEEDS))
+
+
+def ecp5_steps(build):
+    """The build's nextpnr-ecp5 runs: its seeds, and None for the packing of a PIPE_PACK build."""
+    return seeds_of(build) + ([None] if build in PIPE_PACK else [])
 CHECK_CONFIG = "4x5"      # the build that `check` and the target use
 TARGET_CELLS = 18000      # the 4x5 build's budget in generic cells
 COURSE_CELLS = 541785     # the course project's RTL, with no real square root nor divider
@@ -103,8 +113,8 @@ def flows_of(build):
     placed = BUILD_MAP[build][1]
     if placed == "ice40":  # a UP5K candidate: only what the UP5K needs
         return ["ice40", "ice40_place"]
-    if placed == "ecp5p":  # a pipelined build: its cells, and the ECP5 if it is placed
-        return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) else [])
+    if placed == "ecp5p":  # a pipelined build: its cells, and the ECP5 if it is placed or packed
+        return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) or build in PIPE_PACK else [])
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
 
 
@@ -120,7 +130,7 @@ def full_params(build, gen):
 
 
 def run_flow(build, flow, bdir, gen, srcs, record=None, offline=False, real=False):
-    seeds = (seeds_of(build) if flow == "ecp5_place" else SEEDS) if flow.endswith("_place") else ()
+    seeds = (ecp5_steps(build) if flow == "ecp5_place" else SEEDS) if flow.endswith("_place") else ()
     return yosys(os.path.join(bdir, build), flow, params(build), srcs, f"build {build}", gen=gen, record=record,
                  pnr_seeds=seeds, offline=offline, real=real)
 
@@ -145,7 +155,7 @@ def restore(bdir, gen, srcs, record=None):
         for family in ("ecp5", "ice40"):
             if not os.path.exists(os.path.join(bdir, b, f"{family}_place.ok")):
                 continue
-            for s in (seeds_of(b) if family == "ecp5" else SEEDS):
+            for s in (ecp5_steps(b) if family == "ecp5" else SEEDS):
                 missing += run_pnr(b, family, s, bdir, record, offline=True) == "missing"
     return missing
 
@@ -173,6 +183,14 @@ def load_pnr(bdir, build, family):
     if not out:
         raise Failure(f"no nextpnr-{family} result for {build}: run `make synth`")
     return out
+
+
+def load_pack(bdir, build, family="ecp5"):
+    p = os.path.join(bdir, build, f"pack_{family}.ok")
+    if not os.path.exists(p):
+        raise Failure(f"no nextpnr-{family} packing result for {build}: run `make synth`")
+    with open(p) as f:
+        return json.load(f)
 
 
 def pick(counts, pred):
@@ -310,7 +328,13 @@ def report(bdir, gen, out):
     if placed_pipe:
         b0 = placed_pipe[0]
         per_unit = pick(res[b0]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / BUILD_MAP[b0][0]["M"]
-    unplaced_pipe = [b for b in PIPE if not seeds_of(b)]
+    unplaced_pipe = [b for b in PIPE if not seeds_of(b) and b not in PIPE_PACK]
+    packs = {b: load_pack(bdir, b) for b in PIPE_PACK}
+
+    def packed(b):
+        util = packs[b].get("util", {})
+        return "; ".join(f"{n} {fmt(u[0])}/{fmt(u[1])} ({pct(u[0], u[1])})" for n, u in sorted(util.items())
+                         if n in ("TRELLIS_COMB", "TRELLIS_FF", "MULT18X18D", "DP16KD"))
 
     def pnr_minutes(b):
         return ", ".join(f"{r['seconds'] / 60:.0f} min" for r in pnr[b]["ecp5"] if r.get("seconds"))
@@ -319,6 +343,11 @@ def report(bdir, gen, out):
       "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical); "
       + (", ".join(f"{b} (place and route: {pnr_minutes(b)})" for b in placed_pipe)
          + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. " if placed_pipe else "")
+      + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing only (`--pack-only`), which says whether the design "
+                f"fits the device, {'and it does' if packs[b].get('fits') else 'and it does not'}: {packed(b)}; "
+                "it is not placed (the WebAssembly nextpnr-ecp5 places a design that fills most of the device too "
+                "slowly for make synth). "
+                for b in PIPE_PACK)
       + (f"{', '.join(unplaced_pipe)}: generic cells only (a place and route of the WebAssembly nextpnr-ecp5 "
          "takes an hour or more here; the 8x8 has the units of the 8x128, the 16x16 more multipliers than the "
          "device has). " if unplaced_pipe else "")
@@ -333,7 +362,7 @@ def report(bdir, gen, out):
     for b in PIPE:
         mults = BUILD_MAP[b][0]["M"] * per_unit if per_unit else None
         need = f"{mults:g}{'' if mults <= 156 else ' (over 156)'}" if mults else "-"
-        if not seeds_of(b):
+        if not seeds_of(b) and b not in PIPE_PACK:
             w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | - | - | - | - | - | - | not synthesised for "
               f"the ECP5 | not placed | - | {need} |")
             continue
@@ -343,8 +372,11 @@ def report(bdir, gen, out):
             seeds, med = fmax_cells(pnr[b]["ecp5"])
             placed = (f"{fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
                       f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))}")
-        else:
-            seeds, med, placed = "not placed", None, "-"
+        else:  # packed only
+            kp = res[b]["ecp5_place"]["counts"]
+            seeds, med = "packed, not placed" if packs[b].get("fits") else "does not fit", None
+            placed = (f"{fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
+                      f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))}")
         w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | {fmt(pick(k, lambda t: t == 'LUT4'))} "
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
           f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
@@ -518,7 +550,7 @@ def cmd_all(a):
     def pnr_task(build, family, seed):
         try:
             st = run_pnr(build, family, seed, a.build, record)
-            say(f"synth {build:15s} {'pnr ' + family + ' s' + str(seed):12s} {st}")
+            say(f"synth {build:15s} {'pnr ' + family + (' s' + str(seed) if seed is not None else ' pack'):12s} {st}")
             return st
         except Failure as e:
             failures.append(str(e))
@@ -537,6 +569,7 @@ def cmd_all(a):
     # the long runs first (one seed of each build, largest first), then the other seeds
     first_jobs = [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in seeds_of(b)[:1]]
     jobs = first_jobs + [(b, "ecp5", s) for b, _, p in reversed(BUILDS) if p in ("ecp5", "ecp5p") for s in seeds_of(b)[1:]]
+    jobs += [(b, "ecp5", None) for b in PIPE_PACK]
     jobs += [(b, "ice40", SEEDS[0]) for b, _, p in BUILDS if p != "ecp5p"]
     with concurrent.futures.ThreadPoolExecutor(max_workers=max(1, a.jobs)) as ex:
         list(ex.map(lambda j: pnr_task(*j), jobs))
