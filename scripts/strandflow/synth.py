@@ -239,7 +239,7 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
                 old = json.load(f)
             if old.get("pkey") != pkey:
                 write_stamp(stamp, key, **{k: v for k, v in dict(old, pkey=pkey).items() if k != "key"})
-            if not old.get("recorded"):
+            if not old.get("recorded") and not record.get(name, pkey):  # a result the record lacks
                 keep(old)
         return "cached"
     if record is not None and not real:
@@ -325,7 +325,7 @@ def place(d, family, seed, build, record=None, offline=False):
     if stamp_fresh(stamp, key):
         with open(stamp) as f:
             old = json.load(f)
-        if not old.get("recorded"):
+        if not old.get("recorded") and pkey and not record.get(name, pkey):  # a result the record lacks
             keep(old)
         return "cached"
     entry = record.get(name, pkey) if pkey else None
