@@ -39,7 +39,8 @@
  *                A node's two results leave the pipe on consecutive cycles; the second
  *                forms the node (fx_avg of both, or the one that exists), written the
  *                cycle after; a pinned (or held) node is not written.
- *      pairwise: the link between positions s-1 and s, of this colour: its excess e
+ *      pairwise: the link between positions s-1 and s, if it has this colour (its lower
+ *                node's: position s-1 upward, s downward): its excess e
  *                (toward_pipe excess mode along the chain: from the lower node a to
  *                the higher b, P and C carried along), a += e/2 and b -= e/2 (a fixed
  *                end: the other takes e; both fixed or a zero length: nothing);
@@ -250,7 +251,8 @@ module chain_stream #(
                         op_pin_b  = prv_pin;
                     end
                 end else begin                            // the link (s-1, s), from its lower node a
-                    op_valid  = slot && col_x != colour;
+                    // a link has its lower node's colour: position s-1 upward, s downward
+                    op_valid  = slot && (DOWN ? col_x == colour : col_x != colour);
                     op_p      = DOWN ? arr : prv;
                     op_c      = DOWN ? prv : arr;
                     op_pp     = DOWN ? arr_pv : prv_pv;

@@ -15,7 +15,8 @@
 //     never in the first sweep of a pass, and never to a node the current sweep has read
 //     already (the hazard between colours: every read follows the write it needs);
 //   - centred rule: every write is to a node of its sweep's colour (each constraint
-//     writes its own node and reads only the other colour);
+//     writes its own node and reads only the other colour); pairwise: the chain's end
+//     nodes are written only by the sweep of their one link's colour;
 //   - every address (port A of both directions, writes) is a node of its unit (< K);
 //   - done comes only after a start, after exactly 2 ITER sweeps;
 //   - after a reset: done, wr_en, counter are 0.
@@ -84,7 +85,7 @@ module stream_props #(
 
     // this cycle's reads and writes, as node bitmaps, and the checks on them
     reg [N-1:0]  wr_now;
-    reg          wr_twice, wr_soon, wr_colour_bad, wr_range_bad, wr_after_read, wr_first;
+    reg          wr_twice, wr_soon, wr_colour_bad, wr_end_bad, wr_range_bad, wr_after_read, wr_first;
     integer u, v;
     always @* begin
         wr_now = {N{1'b0}};
@@ -92,6 +93,7 @@ module stream_props #(
         wr_twice = 1'b0;
         wr_soon = 1'b0;
         wr_colour_bad = 1'b0;
+        wr_end_bad = 1'b0;
         wr_range_bad = 1'b0;
         wr_after_read = 1'b0;
         wr_first = 1'b0;
@@ -109,6 +111,10 @@ module stream_props #(
                 if (early && (read_now[v] || (read_seen[v] && !newsweep))) wr_after_read = 1'b1;
                 // the colour of the sweep that issued it: the previous one while early
                 if ((v % 2) != (early ? !colour : colour)) wr_colour_bad = 1'b1;
+                // pairwise: the chain's end nodes are each on one link, (0, 1) of colour 0 and
+                // (N-2, N-1) of colour (N-2) mod 2, so only that sweep writes them
+                if (v == 0 && (early ? !colour : colour) != 1'b0) wr_end_bad = 1'b1;
+                if (v == N - 1 && (early ? !colour : colour) != ((N - 2) % 2)) wr_end_bad = 1'b1;
             end
         end
     end
@@ -146,6 +152,7 @@ module stream_props #(
             assert (!wr_after_read);
             assert (wr_en == {M{1'b0}} || running);
             if (RULE == 1'b0) assert (!wr_colour_bad);
+            else assert (!wr_end_bad);
             assert (rd_idx < K && rd_idx_down < K && nidx == rd_idx);
             if (done) assert (running && fec_seen && sweeps + 16'd1 == 2 * ITER);
         end
