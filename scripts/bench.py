@@ -77,7 +77,13 @@ def fmax_of(name):
     try:
         runs = synth.load_pnr(os.path.join(ROOT, BUILD, "synth"), name, "ecp5")
     except synth.Failure:
-        return None, "not placed"
+        try:  # a build make synth packs but does not place: whether it fits
+            pack = synth.load_pack(os.path.join(ROOT, BUILD, "synth"), name)
+            comb = pack.get("util", {}).get("TRELLIS_COMB")
+            return None, ("packs into the device" + (f" ({100 * comb[0] / comb[1]:.0f} % of TRELLIS_COMB)" if comb else "")
+                          if pack.get("fits") else "does not fit") + ", not placed"
+        except synth.Failure:
+            return None, "not placed"
     text, med = synth.fmax_cells(runs)
     return med, (f"{med:.1f}" if med is not None else text)
 

@@ -100,7 +100,7 @@ CORE_FLOWS = ["generic", "flat", "ice40", "ecp5", "xilinx"]
 
 class Record:
     """docs/synth_record.json: {"<build>/<step>": {"key": ..., ...}}, a step being a flow
-    (with "modules": each module's num_cells_by_type) or pnr_<family>_s<seed> (nextpnr's
+    (with "modules": each module's num_cells_by_type), pnr_<family>_s<seed> or pack_<family> (nextpnr's
     outcome). Written whole after every change, under a lock: make synth's workers share it."""
 
     def __init__(self, path=RECORD):
@@ -152,7 +152,13 @@ def portable_key(ys, ver, files, gen):
 
 
 def pnr_portable_key(family, seed, ver, place_key):
+    """seed None: the packing-only step."""
     return digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, place_key)
+
+
+def pnr_step(family, seed):
+    """The name of a place and route step: pnr_<family>_s<seed>, or pack_<family> (seed None)."""
+    return f"pack_{family}" if seed is None else f"pnr_{family}_s{seed}"
 
 
 def pnr_tool(family):
@@ -233,7 +239,7 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
                 old = json.load(f)
             if old.get("pkey") != pkey:
                 write_stamp(stamp, key, **{k: v for k, v in dict(old, pkey=pkey).items() if k != "key"})
-            if not old.get("recorded"):
+            if not old.get("recorded") and not record.get(name, pkey):  # a result the record lacks
                 keep(old)
         return "cached"
     if record is not None and not real:
@@ -242,7 +248,7 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
             family = flow[:-len("_place")]
             pver = tool_version(pnr_tool(family))
             build = os.path.basename(os.path.normpath(d))
-            if not all(record.get(f"{build}/pnr_{family}_s{s}", pnr_portable_key(family, s, pver, pkey))
+            if not all(record.get(f"{build}/{pnr_step(family, s)}", pnr_portable_key(family, s, pver, pkey))
                        for s in pnr_seeds):
                 entry = None
         if entry:
@@ -272,9 +278,11 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
 # ---- place and route ----
 
 def pnr_cmd(family, seed):
-    if family == "ecp5":
-        return [ECP5_NEXTPNR] + ECP5_ARGS + ["--seed", str(seed), "--json", "ecp5.json"]
-    return ["nextpnr-ice40"] + ICE40_ARGS + ["--seed", str(seed), "--json", "ice40.json"]
+    """nextpnr on a *_place flow's netlist with one seed; seed None: packing only (the device's
+    cells the design takes, in a minute where placing a nearly full device takes hours here)."""
+    tool, args = (ECP5_NEXTPNR, ECP5_ARGS) if family == "ecp5" else ("nextpnr-ice40", ICE40_ARGS)
+    run = ["--pack-only"] if seed is None else ["--seed", str(seed)]
+    return [tool] + args + run + ["--json", f"{family}.json"]
 
 
 def pnr_outcome(text, rc):
@@ -294,8 +302,9 @@ def pnr_outcome(text, rc):
 
 
 def place(d, family, seed, build, record=None, offline=False):
-    """Place and route the netlist of d's <family>_place flow with one seed unless cached (build
-    names it in messages). Not fitting is a result. With a record (Record), as yosys()."""
+    """Place and route the netlist of d's <family>_place flow with one seed (None: pack it only)
+    unless cached (build names it in messages). Not fitting is a result. With a record
+    (Record), as yosys()."""
     tool = pnr_tool(family)
     ver = tool_version(tool)
     if ver is None:
@@ -303,8 +312,9 @@ def place(d, family, seed, build, record=None, offline=False):
     with open(os.path.join(d, f"{family}_place.ok")) as f:
         place_stamp = json.load(f)
     key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, place_stamp["key"])
-    stamp = os.path.join(d, f"pnr_{family}_s{seed}.ok")
-    name = f"{build}/pnr_{family}_s{seed}"
+    step = pnr_step(family, seed)
+    stamp = os.path.join(d, f"{step}.ok")
+    name = f"{build}/{step}"
     pkey = (pnr_portable_key(family, seed, ver, place_stamp["pkey"])
             if record is not None and place_stamp.get("pkey") else None)
 
@@ -315,7 +325,7 @@ def place(d, family, seed, build, record=None, offline=False):
     if stamp_fresh(stamp, key):
         with open(stamp) as f:
             old = json.load(f)
-        if not old.get("recorded"):
+        if not old.get("recorded") and pkey and not record.get(name, pkey):  # a result the record lacks
             keep(old)
         return "cached"
     entry = record.get(name, pkey) if pkey else None
@@ -325,7 +335,7 @@ def place(d, family, seed, build, record=None, offline=False):
     if offline:
         return "missing"
     if not os.path.exists(os.path.join(d, f"{family}.json")):
-        raise Failure(f"{build} nextpnr-{family} seed {seed}: the {family}_place flow came from the record, "
+        raise Failure(f"{build} nextpnr-{family} {step}: the {family}_place flow came from the record, "
                       f"which keeps no netlist; remove {os.path.join(d, family + '_place.ok')} and run again")
     # Another run (a second make synth, or `synth.py pnr`) placing the same netlist holds the
     # lock: wait for it and take its result rather than clobber its files.
@@ -351,11 +361,11 @@ def place(d, family, seed, build, record=None, offline=False):
             return "cached"
         if os.path.exists(stamp):
             os.remove(stamp)
-        log = os.path.join(d, f"pnr_{family}_s{seed}.log")
+        log = os.path.join(d, f"{step}.log")
         rc, secs, cpu = run_logged(pnr_cmd(family, seed), d, log, TIMEOUT)
         outcome = pnr_outcome(open(log).read(), rc)
         if outcome["fits"] is None:
-            raise Failure(f"{build} nextpnr-{family} seed {seed}: {outcome['error']} (log: {log})")
+            raise Failure(f"{build} nextpnr-{family} {step}: {outcome['error']} (log: {log})")
         extra = dict(tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
         write_stamp(stamp, key, **extra)
         keep(extra)
