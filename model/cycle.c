@@ -83,9 +83,13 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     c->lt = (int)hw_toward_latency(hp);
     c->lp = (int)hw_toward_pipe_latency(hp);
     if (hp->arch) {
-        c->st_pend = calloc((size_t)n, sizeof *c->st_pend);
-        c->st_pos = calloc((size_t)n, sizeof *c->st_pos);
-        if (!c->st_pend || !c->st_pos) return false;
+        c->st_period = (int)hw_stream_period(hp);
+        c->st_last = (int)hw_stream_last(hp);
+        for (int b = 0; b < 2; b++) {
+            c->st_pend[b] = calloc((size_t)n, sizeof *c->st_pend[b]);
+            c->st_pos[b] = calloc((size_t)n, sizeof *c->st_pos[b]);
+            if (!c->st_pend[b] || !c->st_pos[b]) return false;
+        }
     }
     c->ls = (int)hw_spring_latency(hp);
     c->lsp = (int)hw_spring_pipe_latency(hp);
@@ -94,10 +98,12 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
 
 void cyc_free(cyc_model *c)
 {
-    free(c->st_pend);
-    free(c->st_pos);
-    c->st_pend = NULL;
-    c->st_pos = NULL;
+    for (int b = 0; b < 2; b++) {
+        free(c->st_pend[b]);
+        free(c->st_pos[b]);
+        c->st_pend[b] = NULL;
+        c->st_pos[b] = NULL;
+    }
     sim_fx_free(&c->s);
     scene_free(&c->sc);
 }
@@ -134,7 +140,7 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     } else if (c->hp.arch) { /* chain_stream: the colour, port A's address, the slots issued */
         int k = c->hp.k, t = c->st_t;
         o->uidx = (uint32_t)c->st_colour;
-        o->nidx = !c->st_running || t > k ? 0u : t == 0 ? (uint32_t)(k - 1) : (uint32_t)(t - 1);
+        o->nidx = !c->st_running || t > k || t == 0 ? 0u : (uint32_t)(t - 1);
         o->counter = (uint32_t)c->st_counter;
     } else if (c->hp.rule) {
         o->uidx = (uint32_t)c->pair.uidx;
@@ -207,7 +213,8 @@ static void reset_all(cyc_model *c)
     c->sp_running = c->sp_done = false;
     c->sp_t = c->sp_counter = 0;
     c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
-    if (c->st_pend) memset(c->st_pend, 0, (size_t)n * sizeof *c->st_pend);
+    for (int b = 0; b < 2; b++)
+        if (c->st_pend[b]) memset(c->st_pend[b], 0, (size_t)n * sizeof *c->st_pend[b]);
     c->sq_state = SQ_IDLE;
     c->sq_iter = c->sq_timer = 0;
     c->uidx = c->nidx = c->counter = 0;
@@ -341,48 +348,80 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
 /*
  * chain_stream: the writes of the sweep that starts now. Every constraint of the sweep
  * reads nodes the sweep does not write (the other colour) and the nodes it writes
- * itself, so each is computed here, from the storage as the sweep reads it, with the
+ * itself, each after the previous sweep's write of it has landed, so each is computed
+ * here, from the storage with the previous sweep's pending writes in place, with the
  * frame engine's own function on the node (centred) or link (pairwise), and undone;
- * its result waits in st_pos for its write cycle.
+ * its result waits in st_pos[colour] for its write cycle.
  */
+static void stream_swap_pending(cyc_model *c, int bank)
+{
+    const int n = c->hp.m * c->hp.k;
+    for (int i = 0; i < n; i++)
+        if (c->st_pend[bank][i]) {
+            fx_t t[3];
+            memcpy(t, c->s.pos[i], sizeof t);
+            memcpy(c->s.pos[i], c->st_pos[bank][i], sizeof t);
+            memcpy(c->st_pos[bank][i], t, sizeof t);
+        }
+}
+
 static void stream_plan(cyc_model *c)
 {
     const int n = c->hp.m * c->hp.k, colour = c->st_colour;
     sim_fx *s = &c->s;
-    for (int i = 0; i < n; i++) c->st_pend[i] = false;
+    bool *pend = c->st_pend[colour];
+    fx_t (*pos)[3] = c->st_pos[colour];
+    stream_swap_pending(c, !colour); /* the storage as this sweep reads it */
+    for (int i = 0; i < n; i++) pend[i] = false;
     if (!c->hp.rule) {
         for (int i = colour; i < n; i += 2) {
             fx_t old[3];
             memcpy(old, s->pos[i], sizeof old);
             if (sim_fx_centred_node(s, i)) {
-                c->st_pend[i] = true;
-                memcpy(c->st_pos[i], s->pos[i], sizeof c->st_pos[i]);
+                pend[i] = true;
+                memcpy(pos[i], s->pos[i], sizeof pos[i]);
             }
             memcpy(s->pos[i], old, sizeof old);
         }
-        return;
-    }
-    for (int a = colour; a + 1 < n; a += 2) { /* the link (a, a+1) is the chain's rod a */
-        int b = a + 1;
-        bool fa = sim_fx_node_fixed(s, a), fb = sim_fx_node_fixed(s, b);
-        if (fa && fb) continue;
-        fx_t old_a[3], old_b[3];
-        memcpy(old_a, s->pos[a], sizeof old_a);
-        memcpy(old_b, s->pos[b], sizeof old_b);
-        long skipped = s->skipped;
-        sim_fx_pair_edge(s, a);
-        if (s->skipped == skipped) {
-            if (!fa) {
-                c->st_pend[a] = true;
-                memcpy(c->st_pos[a], s->pos[a], sizeof c->st_pos[a]);
+    } else {
+        for (int a = colour; a + 1 < n; a += 2) { /* the link (a, a+1) is the chain's rod a */
+            int b = a + 1;
+            bool fa = sim_fx_node_fixed(s, a), fb = sim_fx_node_fixed(s, b);
+            if (fa && fb) continue;
+            fx_t old_a[3], old_b[3];
+            memcpy(old_a, s->pos[a], sizeof old_a);
+            memcpy(old_b, s->pos[b], sizeof old_b);
+            long skipped = s->skipped;
+            sim_fx_pair_edge(s, a);
+            if (s->skipped == skipped) {
+                if (!fa) {
+                    pend[a] = true;
+                    memcpy(pos[a], s->pos[a], sizeof pos[a]);
+                }
+                if (!fb) {
+                    pend[b] = true;
+                    memcpy(pos[b], s->pos[b], sizeof pos[b]);
+                }
             }
-            if (!fb) {
-                c->st_pend[b] = true;
-                memcpy(c->st_pos[b], s->pos[b], sizeof c->st_pos[b]);
-            }
+            memcpy(s->pos[a], old_a, sizeof old_a);
+            memcpy(s->pos[b], old_b, sizeof old_b);
         }
-        memcpy(s->pos[a], old_a, sizeof old_a);
-        memcpy(s->pos[b], old_b, sizeof old_b);
+    }
+    stream_swap_pending(c, !colour); /* back: those writes land in their cycles */
+}
+
+/* chain_stream: the writes of stream position s (t = s + LP + 4 in its sweep) of the sweep of
+   this colour; even units stream upward, odd ones downward. */
+static void stream_write(cyc_model *c, bool *written, int colour, int s)
+{
+    const int m = c->hp.m, k = c->hp.k;
+    if (s < 0 || s >= k) return;
+    for (int u = 0; u < m; u++) {
+        int x = u % 2 ? k - 1 - s : s, node = u * k + x;
+        if (!c->st_pend[colour][node]) continue;
+        memcpy(c->s.pos[node], c->st_pos[colour][node], sizeof c->s.pos[node]);
+        c->st_pend[colour][node] = false;
+        lane_write(c, written, u, x, node);
     }
 }
 
@@ -468,18 +507,12 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
         }
     }
-    /* chain_stream: a sweep's writes are planned as it starts and land in their cycles. */
+    /* chain_stream: a sweep's writes are planned as it starts and land in their cycles, the
+       previous sweep's (SP cycles along) while this one starts. */
     if (hp->arch && c->st_running) {
         if (c->st_t == 0) stream_plan(c);
-        int x = c->st_t - 4 - c->lp; /* the node index written in this cycle (chain_stream's header) */
-        if (x >= 0 && x < k)
-            for (int u = 0; u < m; u++) {
-                int node = u * k + x;
-                if (!c->st_pend[node]) continue;
-                memcpy(c->s.pos[node], c->st_pos[node], sizeof c->s.pos[node]);
-                c->st_pend[node] = false;
-                lane_write(c, written, u, x, node);
-            }
+        stream_write(c, written, c->st_colour, c->st_t - 4 - c->lp);
+        stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 4 - c->lp);
     }
     /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
     if (!hp->arch && !hp->rule && c->sq_state == SQ_NEXT) {
@@ -511,12 +544,13 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     }
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
-    /* chain_stream control: sweeps of S cycles, colour 0 then 1, ITER times. */
+    /* chain_stream control: sweeps of SP cycles (the last of the pass SL), colour 0 then 1,
+       ITER times. */
     if (hp->arch && hp->en_constraints) {
-        const int sweep = (int)hw_stream_sweep(hp);
+        const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
+        const int sweep = last ? c->st_last : c->st_period;
         const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k + 2;
         const bool sweep_end = c->st_running && c->st_t == sweep - 1;
-        const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
         c->st_done = sweep_end && last;
         if (seq_start && !c->st_running) {
             c->st_running = true;

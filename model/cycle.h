@@ -102,13 +102,16 @@ typedef struct {
     int uidx, nidx, counter;
     bool sq_done;
     /* chain_stream (ARCH = 1): the sweep's time t, colour, iteration, slots issued; each
-       node's write of this sweep (computed when the sweep starts: a sweep reads only what it
-       does not write), applied in its write cycle */
+       node's write of a sweep, by the sweep's colour (computed when the sweep starts, from the
+       storage with the previous sweep's writes that have not landed yet: a sweep reads only
+       what it does not write, each node after the previous sweep's write of it), applied in
+       its write cycle (the previous sweep's drain overlaps the next sweep's start) */
     int lp;      /* toward_pipe's latency */
+    int st_period, st_last;  /* a sweep's cycles before the next, and the pass's last sweep's */
     bool st_running, st_done;
     int st_t, st_colour, st_iter, st_counter;
-    bool *st_pend;      /* per node: written in this sweep */
-    fx_t (*st_pos)[3];  /* its new position */
+    bool *st_pend[2];      /* per node: written by the sweep of this colour */
+    fx_t (*st_pos[2])[3];  /* its new position */
     /* spring_stream (ARCH = 1 with EN_SPRINGS): one sweep; every force of the pass is
        gathered when it starts (nothing reads a force until the Verlet pass after it) */
     int lsp;     /* spring_force_pipe's latency */

@@ -52,19 +52,27 @@ long hw_spring_latency(const hw_params *hp)
 
 static long node_count(const hw_params *hp) { return (long)hp->m * hp->k; }
 
-long hw_stream_sweep(const hw_params *hp)
+long hw_stream_period(const hw_params *hp)
 {
-    /* chain_stream.v: read node K-1, then nodes 0 .. K-1 (slots from t = 2 to K + 2, the last
-       against the right neighbour's node 0); the last result leaves toward_pipe at K + 2 + LT
-       and is written by K + 3 + LT; the next sweep reads from the cycle after */
+    /* chain_stream.v: every unit reads its stream positions 0 .. K-1 at t = 1 .. K (even units
+       upward, odd ones downward), slots from t = 2 to K + 2; position s is written by
+       s + LP + 4. The next sweep starts when its reads follow those writes (its read of
+       position 0 at t = 1: LP + 4) and its slots this sweep's (K + 3). */
+    long k3 = hp->k + 3, lp4 = hw_toward_pipe_latency(hp) + 4;
+    return k3 > lp4 ? k3 : lp4;
+}
+
+long hw_stream_last(const hw_params *hp)
+{
+    /* the pass's last sweep runs until its last write (position K-1, K + LP + 3) has landed */
     return hp->k + hw_toward_pipe_latency(hp) + 4;
 }
 
 long hw_constraint_pass(const hw_params *hp)
 {
     long n = node_count(hp), rods = hp->graph ? hp->e_rods : n - 1;
-    if (hp->arch) /* chain_stream: two sweeps, even then odd */
-        return 2 * hw_stream_sweep(hp);
+    if (hp->arch) /* chain_stream: two sweeps, even then odd (the pass's last sweep: hw_stream_last) */
+        return 2 * hw_stream_period(hp);
     if (hp->rule == 0) /* chain_sequencer: load C and D, then per node two targets and the slide */
         return 2 + n * (2 * hw_toward_latency(hp) + 2);
     return rods * (hw_toward_latency(hp) + 5); /* pair_sequencer: read a, b, excess, write a, b */
@@ -82,7 +90,13 @@ long hw_spring_pass(const hw_params *hp)
 /* node_unit: K nodes through a four-stage pass (the last written 4 cycles after its read), FV;
    with constraints the sequencer starts the cycle after */
 static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 5 : 4); }
-static long constrain_phase(const hw_params *hp) { return hp->en_constraints ? hp->iter * hw_constraint_pass(hp) : 0; }
+static long constrain_phase(const hw_params *hp)
+{
+    if (!hp->en_constraints) return 0;
+    if (hp->arch) /* 2 ITER sweeps, the last one to its drain */
+        return (2L * hp->iter - 1) * hw_stream_period(hp) + hw_stream_last(hp);
+    return hp->iter * hw_constraint_pass(hp);
+}
 static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
 static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 4 : 0; }
 static long grab_phase(const hw_params *hp) { return hp->grab && hp->en_mouse ? node_count(hp) + 1 : 0; }
@@ -95,7 +109,9 @@ long hw_cycles_per_frame(const hw_params *hp)
 
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
-    char pipe[128] = "";
+    char pipe[128] = "", last[96] = "";
+    if (hp->arch && hp->en_constraints) /* the pass's last sweep runs to its drain */
+        snprintf(last, sizeof last, "; a substep's last sweep SL = K + LP + 4 = %ld", hw_stream_last(hp));
     if (hp->arch && hp->en_constraints)
         snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
                  hp->projection ? "2 SQRT_BITS + DIV_BITS + 34" : "SQRT_BITS + DIV_BITS + 15", hw_toward_pipe_latency(hp));
@@ -103,16 +119,17 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "%s latency LT = %s = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
                     "%s"
-                    "constraint pass = %s = %ld\n"
+                    "constraint pass = %s = %ld%s\n"
                     "spring pass = %s = %ld\n"
-                    "substep = Verlet (K + 5 with constraints, else K + 4) + ITER passes [+ spring pass] [+ ground K + 4] = %ld\n"
+                    "substep = Verlet (K + 5 with constraints, else K + 4) + %s [+ spring pass] [+ ground K + 4] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
-                    hp->arch ? "2 sweeps (K + LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
-                    hw_constraint_pass(hp),
+                    hp->arch ? "2 sweeps of SP = max(K + 3, LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
+                    hw_constraint_pass(hp), last,
                     hp->arch ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
-                    hw_spring_pass(hp), verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
+                    hw_spring_pass(hp), hp->arch ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes",
+                    verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

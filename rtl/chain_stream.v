@@ -12,40 +12,56 @@
  * Within a sweep no two constraints share a node, and every constraint reads only
  * nodes its sweep does not write (the other colour) and the node(s) it writes itself,
  * so the whole sweep can be in flight at once and the result is the one of taking its
- * constraints one by one. The sweep drains (its last write lands) before the next
- * one reads: the hazard between colours is avoided by time, and the sweep's length is
- * fixed, whatever the data.
+ * constraints one by one.
+ *
+ * Directions: even units stream their nodes upward (0 .. K-1), odd units downward
+ * (K-1 .. 0), so the two nodes of every unit border are taken at the same time: both
+ * first (the border between an odd unit and the next) or both last (an even unit and
+ * the next). In a unit's stream order (position s = the node, or K-1-node downward)
+ * every node is written a fixed time after it is read, the later the further along the
+ * stream, and the next sweep reads it as far along again: so the next sweep may start
+ * long before this one drains. Its start waits only for the toward_pipe latency (a
+ * node written LT + 4 cycles after its position's read, read again LT + 4 later at
+ * the earliest) and for this sweep's slots (port A and the pipe's input are each used
+ * once a cycle). The order within a colour does not change a result.
  *
  * A sweep, counting its first cycle as t = 0 (every unit in step; LT is toward_pipe's
  * latency, model/timing.c hw_toward_pipe_latency):
- *   t = 0        port A reads node K-1: the left neighbour's of the next unit
- *   t = 1 .. K   port A reads node t-1; its data arrive at t+1
- *   t = 1        each unit takes its left neighbour's node K-1 (left)
- *   t = 2        each unit takes its right neighbour's node 0 (right)
- *   t = x + 2    slot x = 0 .. K: node x arrives (slot K: right), node x-1 is the
- *                previous arrival (slot 0: left); the slot issues at most one operation:
- *      centred:  node x of this colour: the point at rest from x-1 toward x ("up");
- *                else node x-1 of this colour: the point from x toward x-1 ("down").
+ *   t = 1 .. K   port A reads stream position t-1 (rd_idx upward, rd_idx_down in odd
+ *                units); its data arrive at t+1
+ *   t = s + 2    slot s = 0 .. K: position s arrives (slot K: "after", the neighbour
+ *                across the stream's end, its position K-1, held since t = K+1);
+ *                position s-1 is the previous arrival (slot 0: "before", the
+ *                neighbour across the stream's start, its position 0, arriving now);
+ *                the slot issues at most one operation:
+ *      centred:  position s of this colour: the point at rest from s-1 toward s ("up");
+ *                else position s-1 of this colour: the point from s toward s-1 ("down").
  *                A node's two results leave the pipe on consecutive cycles; the second
  *                forms the node (fx_avg of both, or the one that exists), written the
  *                cycle after; a pinned (or held) node is not written.
- *      pairwise: the link (x-1, x) of this colour: its excess e (toward_pipe excess
- *                mode, P and C carried along), a += e/2 and b -= e/2 (a fixed end:
- *                the other takes e; both fixed or a zero length: nothing); a is
- *                written the cycle after the result, b the cycle after that. A link
- *                across a unit border is computed by both units alike, and each
- *                writes its own end.
- *   The last write lands in cycle K + LT + 3; the next sweep starts at t = S =
- *   K + LT + 4. done is high the cycle after the last sweep (2 ITER sweeps a pass).
- * Global node g = u K + x has colour g mod 2; node 0 has no up, node N-1 no down (the
- * operation runs and its result is dropped), so every sweep takes the same time.
+ *      pairwise: the link between positions s-1 and s, if it has this colour (its lower
+ *                node's: position s-1 upward, s downward): its excess e
+ *                (toward_pipe excess mode along the chain: from the lower node a to
+ *                the higher b, P and C carried along), a += e/2 and b -= e/2 (a fixed
+ *                end: the other takes e; both fixed or a zero length: nothing);
+ *                position s-1 is written the cycle after the result, position s the
+ *                cycle after that. A link across a unit border is computed by both
+ *                units alike, and each writes its own end.
+ *   Position s is written in cycle s + LT + 4 at the latest. The next sweep starts at
+ *   t = SP = max(K + 3, LT + 4) (its first read, t = 1, comes after position 0's write;
+ *   its slots after this sweep's last, t = K + 2), so sweeps overlap by their drain;
+ *   the last sweep of the pass runs to t = SL - 1, SL = K + LT + 4 (its last write lands
+ *   in cycle K + LT + 3), and done is high the cycle after (2 ITER sweeps a pass:
+ *   (2 ITER - 1) SP + SL cycles).
+ * Global node g = u K + x has colour g mod 2; the chain's end nodes have one neighbour
+ * (the operation runs and its result is dropped), so every sweep takes the same time.
  *
- * Observation (DEBUG): uidx is the sweep's colour, nidx port A's address, counter
- * the slots issued in this sweep (0 .. K+1), FEC = every slot issued.
+ * Observation (DEBUG): uidx is the sweep's colour, nidx port A's upward address,
+ * counter the slots issued in this sweep (0 .. K+1), FEC = every slot issued.
  *
- * Ports: port A of every unit at one address (rd_idx; data the next cycle, per unit
- * in rd_pos_all, rd_pin_all: pinned or held); one write per unit per cycle at most
- * (wr_en[u], wr_idx_all, wr_pos_all).
+ * Ports: port A of the even units at rd_idx, of the odd units at rd_idx_down (data the
+ * next cycle, per unit in rd_pos_all, rd_pin_all: pinned or held); one write per unit
+ * per cycle at most (wr_en[u], wr_idx_all, wr_pos_all).
  */
 module chain_stream #(
 `include "strand_params.vh"
@@ -56,7 +72,8 @@ module chain_stream #(
     output reg              done,       // one-cycle pulse after the last pass
     input  wire [W-1:0]     rest_len,
 
-    output reg  [IW-1:0]    rd_idx,     // port A address of every unit
+    output reg  [IW-1:0]    rd_idx,     // port A address of the even units (upward)
+    output reg  [IW-1:0]    rd_idx_down, //   and of the odd ones (downward)
     input  wire [M*DIM*W-1:0] rd_pos_all,
     input  wire [M-1:0]     rd_pin_all,
     input  wire [M*DIM*W-1:0] rd_prev_all, // PROJECTION: the previous positions, read with them
@@ -74,14 +91,18 @@ module chain_stream #(
     localparam integer DW     = DIM * W;
     localparam integer LT     = PROJECTION ? 2 * SQRT_BITS + DIV_BITS + 34   // toward_prev_pipe's latency
                                            : SQRT_BITS + DIV_BITS + 15;      // toward_pipe's
-    localparam integer S      = K + LT + 4;                    // a sweep's cycles
-    localparam integer TW     = $clog2(S + 1);
+    localparam integer SP     = K + 3 > LT + 4 ? K + 3 : LT + 4; // a sweep's cycles before the next
+    localparam integer SL     = K + LT + 4;                    // the last sweep's, to its last write
+    localparam integer TW     = $clog2(SL + 1);
     localparam integer XW     = IW + 1;                        // a slot number, 0 .. K
     localparam integer ITW    = ITER > 1 ? $clog2(ITER) : 1;
-    localparam integer TAG_W  = XW + 4;                      // x, down, exists, a's pin, b's pin
-    localparam integer S_LAST_I = S - 1, K_I = K, K1_I = K + 1, K2_I = K + 2, ITER_LAST_I = ITER - 1;
-    localparam [TW-1:0]  S_LAST  = S_LAST_I[TW-1:0];
+    localparam integer TAG_W  = XW + 4;                      // s, down, exists, a's pin, b's pin
+    localparam integer SP_LAST_I = SP - 1, SL_LAST_I = SL - 1, K_I = K, K1_I = K + 1, K2_I = K + 2;
+    localparam integer ITER_LAST_I = ITER - 1;
+    localparam [TW-1:0]  SP_LAST = SP_LAST_I[TW-1:0];
+    localparam [TW-1:0]  SL_LAST = SL_LAST_I[TW-1:0];
     localparam [TW-1:0]  T_K     = K_I[TW-1:0];
+    localparam [TW-1:0]  T_K1    = K1_I[TW-1:0];
     localparam [TW-1:0]  T_K2    = K2_I[TW-1:0];
     localparam [XW-1:0]  X_K     = K_I[XW-1:0];
     localparam [CW-1:0]  SLOTS   = K1_I[CW-1:0];
@@ -96,18 +117,17 @@ module chain_stream #(
     reg [TW-1:0]  t;
     reg           colour;
     reg [ITW-1:0] iter_q;
-    wire          sweep_end = running && t == S_LAST;
-    wire          slot = running && t >= 2 && t <= T_K2;  // slot x = t - 2 is issued
+    wire          last      = colour && iter_q == ITER_LAST;  // the pass's last sweep
+    wire          sweep_end = running && t == (last ? SL_LAST : SP_LAST);
+    wire          slot = running && t >= 2 && t <= T_K2;  // slot s = t - 2 is issued
     localparam [TW-1:0] T_TWO = 2;
     /* verilator lint_off UNUSEDSIGNAL */
     // a slot number needs the low bits only
     wire [TW-1:0] t_minus_2 = t - T_TWO;
     /* verilator lint_on UNUSEDSIGNAL */
     wire [XW-1:0] x = t_minus_2[XW-1:0];
-    wire          take_left  = running && t == 1;
-    wire          take_right = running && t == 2;
+    wire          take_after = running && t == T_K1;  // the neighbour's position K-1 arrives
 
-    wire          last      = colour && iter_q == ITER_LAST;
     always @(posedge clk) begin
         if (reset) begin
             running <= 1'b0;
@@ -137,17 +157,20 @@ module chain_stream #(
         end
     end
 
-    // port A: node K-1 first, then node 0 .. K-1
+    // port A: stream positions 0 .. K-1 at t = 1 .. K (upward in even units, downward in odd)
     /* verilator lint_off UNUSEDSIGNAL */
     // an address needs the low bits only
     wire [TW-1:0] t_minus_1 = t - 1'b1;
     /* verilator lint_on UNUSEDSIGNAL */
     always @* begin
-        if (!running || t > T_K) rd_idx = {IW{1'b0}};
-        else if (t == {TW{1'b0}}) rd_idx = K_LAST;
-        else rd_idx = t_minus_1[IW-1:0];
+        if (!running || t == {TW{1'b0}} || t > T_K) begin
+            rd_idx      = {IW{1'b0}};
+            rd_idx_down = {IW{1'b0}};
+        end else begin
+            rd_idx      = t_minus_1[IW-1:0];
+            rd_idx_down = K_LAST - t_minus_1[IW-1:0];
+        end
     end
-
 
     assign uidx = {{(UW-1){1'b0}}, colour};
     assign nidx = rd_idx;
@@ -157,36 +180,42 @@ module chain_stream #(
     genvar u;
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
-            localparam integer U_PAR_I = (u * K) % 2;
-            localparam [0:0] U_PAR = U_PAR_I[0:0];     // colour of the unit's node 0
-            localparam [0:0] FIRST = u == 0;          // node 0 of the chain is here
-            localparam [0:0] FINAL = u == M - 1;      // node N-1 is here
+            localparam [0:0] DOWN  = u % 2 == 1;       // the unit streams K-1 .. 0
+            // colour of stream position 0: node 0, or node K-1 downward
+            localparam integer S_PAR_I = (u * K + (u % 2 == 1 ? K - 1 : 0)) % 2;
+            localparam [0:0] S_PAR = S_PAR_I[0:0];
+            // the neighbours across the stream's start and end (upward: u-1 and u+1)
+            localparam integer BEFORE_U = u % 2 == 1 ? u + 1 : u - 1;
+            localparam integer AFTER_U  = u % 2 == 1 ? u - 1 : u + 1;
+            localparam [0:0] HAS_BEFORE = BEFORE_U >= 0 && BEFORE_U < M;
+            localparam [0:0] HAS_AFTER  = AFTER_U >= 0 && AFTER_U < M;
+            localparam integer BEFORE_I = HAS_BEFORE ? BEFORE_U : u;  // (an index in range)
+            localparam integer AFTER_I  = HAS_AFTER ? AFTER_U : u;
 
             wire [DW-1:0] own     = rd_pos_all[u*DW +: DW];
             wire [DW-1:0] own_pv  = rd_prev_all[u*DW +: DW];
             wire          own_pin = rd_pin_all[u];
-            reg  [DW-1:0] left_q, right_q, prev_q;
-            reg  [DW-1:0] left_pv, right_pv, prev_pv;               // their previous positions (PROJECTION)
-            reg           left_pin, right_pin, prev_pin;
+            // nb_first: the neighbour's position 0, read with ours (slot 0 only)
+            wire [DW-1:0] nb_first     = HAS_BEFORE ? rd_pos_all[BEFORE_I*DW +: DW] : {DW{1'b0}};
+            wire [DW-1:0] nb_first_pv  = HAS_BEFORE ? rd_prev_all[BEFORE_I*DW +: DW] : {DW{1'b0}};
+            wire          nb_first_pin = HAS_BEFORE && rd_pin_all[BEFORE_I];
+            reg  [DW-1:0] after_q, prev_q;
+            reg  [DW-1:0] after_pv, prev_pv;               // their previous positions (PROJECTION)
+            reg           after_pin, prev_pin;
             wire          at_k    = x == X_K;
             wire          at_0    = x == {XW{1'b0}};
-            wire [DW-1:0] arr     = at_k ? right_q : own;       // node x
-            wire [DW-1:0] arr_pv  = at_k ? right_pv : own_pv;
-            wire          arr_pin = at_k ? right_pin : own_pin;
-            wire [DW-1:0] prv     = at_0 ? left_q : prev_q;     // node x-1
-            wire [DW-1:0] prv_pv  = at_0 ? left_pv : prev_pv;
-            wire          prv_pin = at_0 ? left_pin : prev_pin;
-            wire          col_x   = U_PAR ^ x[0];               // colour of node x
+            wire [DW-1:0] arr     = at_k ? after_q : own;       // position s
+            wire [DW-1:0] arr_pv  = at_k ? after_pv : own_pv;
+            wire          arr_pin = at_k ? after_pin : own_pin;
+            wire [DW-1:0] prv     = at_0 ? nb_first : prev_q;     // position s-1
+            wire [DW-1:0] prv_pv  = at_0 ? nb_first_pv : prev_pv;
+            wire          prv_pin = at_0 ? nb_first_pin : prev_pin;
+            wire          col_x   = S_PAR ^ x[0];               // colour of position s
             always @(posedge clk) begin
-                if (take_left) begin
-                    left_q   <= u > 0 ? rd_pos_all[(u > 0 ? u - 1 : 0)*DW +: DW] : {DW{1'b0}};
-                    left_pv  <= u > 0 ? rd_prev_all[(u > 0 ? u - 1 : 0)*DW +: DW] : {DW{1'b0}};
-                    left_pin <= u > 0 && rd_pin_all[u > 0 ? u - 1 : 0];
-                end
-                if (take_right) begin
-                    right_q   <= u < M - 1 ? rd_pos_all[(u < M - 1 ? u + 1 : u)*DW +: DW] : {DW{1'b0}};
-                    right_pv  <= u < M - 1 ? rd_prev_all[(u < M - 1 ? u + 1 : u)*DW +: DW] : {DW{1'b0}};
-                    right_pin <= u < M - 1 && rd_pin_all[u < M - 1 ? u + 1 : u];
+                if (take_after) begin
+                    after_q   <= HAS_AFTER ? rd_pos_all[AFTER_I*DW +: DW] : {DW{1'b0}};
+                    after_pv  <= HAS_AFTER ? rd_prev_all[AFTER_I*DW +: DW] : {DW{1'b0}};
+                    after_pin <= HAS_AFTER && rd_pin_all[AFTER_I];
                 end
                 if (slot) begin
                     prev_q   <= arr;
@@ -195,7 +224,7 @@ module chain_stream #(
                 end
             end
 
-            // the operation of slot x
+            // the operation of slot s (x)
             reg           op_valid, op_down, op_exists, op_pin_a, op_pin_b;
             reg [DW-1:0]  op_p, op_c, op_pp, op_pc;  // P, C and their previous positions
             always @* begin
@@ -203,31 +232,34 @@ module chain_stream #(
                 op_pin_a  = prv_pin;
                 op_pin_b  = arr_pin;
                 if (RULE == 0) begin
-                    if (col_x == colour) begin            // up: node x from x-1 (none at slot K)
+                    if (col_x == colour) begin            // up: position s from s-1 (none at slot K)
                         op_valid  = slot && !at_k;
                         op_p      = prv;
                         op_c      = arr;
                         op_pp     = prv_pv;
                         op_pc     = arr_pv;
-                        op_exists = !(FIRST && at_0);
+                        op_exists = !(!HAS_BEFORE && at_0);
                         op_pin_b  = arr_pin;              // the node's pin
-                    end else begin                        // down: node x-1 from x
+                    end else begin                        // down: position s-1 from s
                         op_valid  = slot && !at_0;
                         op_down   = 1'b1;
                         op_p      = arr;
                         op_c      = prv;
                         op_pp     = arr_pv;
                         op_pc     = prv_pv;
-                        op_exists = !(FINAL && at_k);
+                        op_exists = !(!HAS_AFTER && at_k);
                         op_pin_b  = prv_pin;
                     end
-                end else begin                            // the link (x-1, x)
-                    op_valid  = slot && col_x != colour;
-                    op_p      = prv;
-                    op_c      = arr;
-                    op_pp     = prv_pv;
-                    op_pc     = arr_pv;
-                    op_exists = !(FIRST && at_0) && !(FINAL && at_k);
+                end else begin                            // the link (s-1, s), from its lower node a
+                    // a link has its lower node's colour: position s-1 upward, s downward
+                    op_valid  = slot && (DOWN ? col_x == colour : col_x != colour);
+                    op_p      = DOWN ? arr : prv;
+                    op_c      = DOWN ? prv : arr;
+                    op_pp     = DOWN ? arr_pv : prv_pv;
+                    op_pc     = DOWN ? prv_pv : arr_pv;
+                    op_pin_a  = DOWN ? arr_pin : prv_pin;
+                    op_pin_b  = DOWN ? prv_pin : arr_pin;
+                    op_exists = !(!HAS_BEFORE && at_0) && !(!HAS_AFTER && at_k);
                 end
             end
 
@@ -256,9 +288,12 @@ module chain_stream #(
             wire          o_pin_b  = o_tag[0];
             wire          ok       = o_valid && o_ok && o_exists;
             /* verilator lint_off UNUSEDSIGNAL */
-            // a node index (x - 1 < K)
+            // node indices need the low bits only (positions s-1 and s are < K where written)
             wire [XW-1:0] o_x_m1   = o_x - 1'b1;
+            wire [XW-1:0] o_x_up   = X_K - o_x;                 // K - s: position s-1 downward
+            wire [XW-1:0] o_x_dn   = X_K - 1'b1 - o_x;          // K-1-s: position s downward
             /* verilator lint_on UNUSEDSIGNAL */
+            wire [IW-1:0] node_s_m1 = DOWN ? o_x_up[IW-1:0] : o_x_m1[IW-1:0];  // the node at position s-1
 
             reg           wr_en_q;
             reg [IW-1:0]  wr_idx_q;
@@ -276,7 +311,7 @@ module chain_stream #(
                         up_t  <= o_t;
                         up_ok <= ok;
                     end
-                    wr_idx_q <= o_x_m1[IW-1:0];
+                    wr_idx_q <= node_s_m1;
                     wr_pos_q <= up_ok && ok ? avg : up_ok ? up_t : o_t;
                     if (reset) wr_en_q <= 1'b0;
                     else wr_en_q <= o_valid && o_down && (up_ok || ok) && !o_pin_b;
@@ -294,16 +329,22 @@ module chain_stream #(
                                                   .b(o_pin_a ? o_t[k*W +: W] : half[k*W +: W]), .y(new_b[k*W +: W]), .sat());
                 end
                 /* verilator lint_on PINCONNECTEMPTY */
-                // b waits a cycle: results come every other cycle, so the write port is free then
+                // position s-1 is written first, position s waits a cycle: results come every
+                // other cycle, so the write port is free then. Upward a is at s-1, downward at s.
+                wire [IW-1:0] node_s   = DOWN ? o_x_dn[IW-1:0] : o_x[IW-1:0];  // the node at position s
+                wire [DW-1:0] new_s_m1 = DOWN ? new_b : new_a;
+                wire [DW-1:0] new_s    = DOWN ? new_a : new_b;
+                wire          pin_s_m1 = DOWN ? o_pin_b : o_pin_a;
+                wire          pin_s    = DOWN ? o_pin_a : o_pin_b;
                 reg          b_en;
                 reg [IW-1:0] b_idx;
                 reg [DW-1:0] b_pos;
                 always @(posedge clk) begin
                     if (o_valid) begin
-                        wr_idx_q <= o_x_m1[IW-1:0];
-                        wr_pos_q <= new_a;
-                        b_idx    <= o_x[IW-1:0];
-                        b_pos    <= new_b;
+                        wr_idx_q <= node_s_m1;
+                        wr_pos_q <= new_s_m1;
+                        b_idx    <= node_s;
+                        b_pos    <= new_s;
                     end else begin
                         wr_idx_q <= b_idx;
                         wr_pos_q <= b_pos;
@@ -312,8 +353,8 @@ module chain_stream #(
                         wr_en_q <= 1'b0;
                         b_en    <= 1'b0;
                     end else if (o_valid) begin
-                        wr_en_q <= ok && !o_pin_a && o_x != {XW{1'b0}};   // a is this unit's from x = 1
-                        b_en    <= ok && !o_pin_b && o_x != X_K;          // b is this unit's up to x = K-1
+                        wr_en_q <= ok && !pin_s_m1 && o_x != {XW{1'b0}};   // position s-1 is this unit's from s = 1
+                        b_en    <= ok && !pin_s && o_x != X_K;             // position s up to s = K-1
                     end else begin
                         wr_en_q <= b_en;
                         b_en    <= 1'b0;

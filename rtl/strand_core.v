@@ -118,6 +118,7 @@ module strand_core #(
     // ---- port A of the units: one reader at a time (the scan, the spring pass, the
     // constraint sequencer); the data of unit rd_sel_q arrive the cycle after ----
     wire [AW-1:0] c_rd, c_wr, f_rd, f_wr, scan_addr;
+    wire [IW-1:0] c_rd_down;  // chain_stream: port A of the odd units, which stream downward
     wire          c_wr_en, f_wr_en;
     wire [DW-1:0] c_wr_pos, f_wr_pos;
     wire [UW-1:0] c_uidx, f_uidx;
@@ -158,7 +159,7 @@ module strand_core #(
 `include "strand_params_pass.vh"
             ) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
-                .rd_idx(c_rd[IW-1:0]), .rd_pos_all(a_pos_all), .rd_pin_all(a_pin_all),
+                .rd_idx(c_rd[IW-1:0]), .rd_idx_down(c_rd_down), .rd_pos_all(a_pos_all), .rd_pin_all(a_pin_all),
                 .rd_prev_all(PROJECTION ? a_prev_all : {(M*DW){1'b0}}),
                 .wr_en(seq_we), .wr_idx_all(seq_widx), .wr_pos_all(seq_wpos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
@@ -176,6 +177,7 @@ module strand_core #(
                 .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}),  // (a kept port would keep its mux)
                 .wr_en(c_wr_en), .wr_uidx(c_wr[AW-1:IW]), .wr_nidx(c_wr[IW-1:0]), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
+            assign c_rd_down = {IW{1'b0}};
         end else if (EN_CONSTRAINTS) begin : g_pairwise
             pair_sequencer #(
 `include "strand_params_pass.vh"
@@ -187,8 +189,10 @@ module strand_core #(
                 .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}), .rd_acc({DW{1'b0}}),  // previous positions: PROJECTION only
                 .wr_en(c_wr_en), .wr_uidx(c_wr[AW-1:IW]), .wr_nidx(c_wr[IW-1:0]), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
+            assign c_rd_down = {IW{1'b0}};
         end else begin : g_no_constraints
             assign seq_done  = 1'b0;
+            assign c_rd_down = {IW{1'b0}};
             assign c_rd      = {AW{1'b0}};
             assign c_wr      = {AW{1'b0}};
             assign c_wr_en   = 1'b0;
@@ -285,6 +289,7 @@ module strand_core #(
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
+            localparam [0:0] STREAM_DOWN = EN_CONSTRAINTS && ARCH && u % 2 == 1;  // chain_stream: reads downward
             wire here_init = init_we && init_addr[AW-1:IW] == U_ID;
             wire here_load = node_we && cfg_node[AW-1:IW] == U_ID;  // NODE: the address is in cfg_data, as for PIN
             wire here_seq  = seq_we[u];
@@ -298,7 +303,7 @@ module strand_core #(
                 .mouse(mouse_q), .mouse_down(mouse_down_q), .damping(damping), .impulse(impulse),
                 .ground(ground), .friction(friction),
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),
-                .a_idx(seq_rd[IW-1:0]), .a_pos(a_pos_all[u*DW +: DW]), .a_prev(a_prev_all[u*DW +: DW]),
+                .a_idx(STREAM_DOWN && !in_scan && !in_force ? c_rd_down : seq_rd[IW-1:0]), .a_pos(a_pos_all[u*DW +: DW]), .a_prev(a_prev_all[u*DW +: DW]),
                 .a_acc(a_acc_all[u*DW +: DW]), .a_pinned(a_pin_all[u]),
                 .acc_we(here_acc), .acc_w(acc_w_all[u*DW +: DW]),
                 .w_en(here_init || here_load || here_seq),

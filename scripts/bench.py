@@ -279,7 +279,8 @@ def main():
              "datapath for the whole body, the scene's order); *pipelined* is ARCH = 1 (the red/black order, every "
              "unit streaming its nodes through its own toward_pipe: one distance evaluation a clock per unit, so its "
              "ceiling is 0.5 x M updates a clock (centred: a node takes two evaluations; pairwise: a sweep's K + 1 "
-             "slots carry the K / 2 links of its colour), less the pipeline's drain at every colour switch). Cycles are "
+             "slots carry the K / 2 links of its colour); a sweep takes max(K + 3, LP + 4) cycles, so a short body waits for "
+             "the pipe's latency LP at every colour switch, and a long one pays its drain once a substep). Cycles are "
              "counted by the harness on the RTL (Verilator, RTL alone); updates/s = updates per clock over whole "
              "frames x fmax.", "",
              *phys, "",

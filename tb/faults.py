@@ -46,8 +46,8 @@ FAULTS = {
     # the pipelined pass (ARCH = 1): a sweep one cycle short, so the next colour reads before
     # the last write of the previous one has landed (shows first as the colour changing early)
     "boundary": [
-        ("chain_stream.v", r"^    localparam integer S      = K \+ LT \+ 4; .*\n",
-         "    localparam integer S      = K + LT + 3;  // planted fault: a sweep one cycle short\n"),
+        ("chain_stream.v", r"^    localparam integer SP     = K \+ 3 > LT \+ 4 \? K \+ 3 : LT \+ 4; .*\n",
+         "    localparam integer SP     = (K + 3 > LT + 4 ? K + 3 : LT + 4) - 1;  // planted fault: a sweep one cycle short\n"),
     ],
     # the pipelined pass: toward_pipe's output register bypassed (every result a cycle early)
     "bypass": [
@@ -66,11 +66,12 @@ FAULTS = {
 }
 
 FAULTS["hazard"] = [
-    # the pipelined pass: a unit's colours taken from its local node index, not the global
-    # one, so across a unit border that starts at an odd node two neighbours are in flight
-    # in the same sweep, each reading the other's old position
-    ("chain_stream.v", r"^            localparam \[0:0\] U_PAR = U_PAR_I\[0:0\];",
-     "            localparam [0:0] U_PAR = 1'b0 & U_PAR_I[0];  // planted fault: local colours"),
+    # the pipelined pass: a unit's colours taken from its local stream position, not the
+    # global node, so across a unit border at an odd node (or in a unit that streams
+    # downward from an odd one) two neighbours are in flight in the same sweep, each
+    # reading the other's old position
+    ("chain_stream.v", r"^            localparam \[0:0\] S_PAR = S_PAR_I\[0:0\];",
+     "            localparam [0:0] S_PAR = 1'b0 & S_PAR_I[0];  // planted fault: local colours"),
 ]
 
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).

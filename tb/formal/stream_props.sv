@@ -3,17 +3,21 @@
 // tb/formal/stream.sby.
 //
 // A pass is two sweeps, colour 0 (even nodes, or links (2j, 2j+1)) then colour 1; uidx is
-// the sweep's colour, counter the slots issued (0 .. K+1), FEC every slot issued. Checked:
+// the sweep's colour, counter the slots issued (0 .. K+1), FEC every slot issued. A sweep's
+// writes land from LT + 4 cycles after its start, into the next sweep when the sweeps
+// overlap (the last sweep of the pass runs until they have landed). Checked:
 //   - counter only holds, steps up by one, or goes back to 0 when a sweep starts (the
 //     colour changes, or a start); FEC is high exactly when counter = K+1, and it is
 //     reached before every sweep's end;
-//   - within a sweep no node is written twice: the constraints in flight together (a
-//     sweep's writes all land after its reads, the pipe being longer than the sweep's
-//     slots) share no node;
-//   - centred rule: every write is to a node of the sweep's colour (each constraint
-//     writes its own node and reads only the other colour); a write of a sweep cannot
-//     land in the next one;
-//   - every address (port A, writes) is a node of its unit (< K);
+//   - no node is written twice within SP cycles (a sweep's period): the constraints in
+//     flight together share no node;
+//   - a write that lands in the first LT + 4 cycles of a sweep is the previous sweep's:
+//     never in the first sweep of a pass, and never to a node the current sweep has read
+//     already (the hazard between colours: every read follows the write it needs);
+//   - centred rule: every write is to a node of its sweep's colour (each constraint
+//     writes its own node and reads only the other colour); pairwise: the chain's end
+//     nodes are written only by the sweep of their one link's colour;
+//   - every address (port A of both directions, writes) is a node of its unit (< K);
 //   - done comes only after a start, after exactly 2 ITER sweeps;
 //   - after a reset: done, wr_en, counter are 0.
 `default_nettype none
@@ -38,9 +42,11 @@ module stream_props #(
     localparam integer IW = K > 1 ? $clog2(K) : 1;
     localparam integer CW = $clog2(N + 1);
     localparam integer SLOTS = K + 1;
+    localparam integer LT = 1 + 1 + 15;                         // the stub's latency (SQRT_BITS = DIV_BITS = 1)
+    localparam integer SP = K + 3 > LT + 4 ? K + 3 : LT + 4;    // chain_stream's sweep period
 
     wire             done, fec;
-    wire [IW-1:0]    rd_idx, nidx;
+    wire [IW-1:0]    rd_idx, rd_idx_down, nidx;
     wire [M-1:0]     wr_en;
     wire [M*IW-1:0]  wr_idx_all;
     wire [M*2*W-1:0] wr_pos_all;
@@ -50,7 +56,8 @@ module stream_props #(
     chain_stream #(.W(W), .F(F), .M(M), .K(K), .SQRT_BITS(1), .DIV_BITS(1), .ITER(ITER), .DIM(2), .RULE(RULE),
                    .ARCH(1'b1)) dut (
         .clk(clk), .reset(reset), .start(start), .done(done), .rest_len(rest_len),
-        .rd_idx(rd_idx), .rd_pos_all(rd_pos_all), .rd_pin_all(rd_pin_all),
+        .rd_idx(rd_idx), .rd_idx_down(rd_idx_down), .rd_pos_all(rd_pos_all), .rd_pin_all(rd_pin_all),
+        .rd_prev_all({(M*2*W){1'b0}}),
         .wr_en(wr_en), .wr_idx_all(wr_idx_all), .wr_pos_all(wr_pos_all),
         .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec));
 
@@ -64,29 +71,50 @@ module stream_props #(
 
     reg          reset_prev, colour_prev, fec_seen;
     reg [CW-1:0] counter_prev;
-    reg [N-1:0]  written;
-    reg [15:0]   sweeps;
+    reg [15:0]   sweeps, tsw;          // sweeps of this pass so far, cycles since this sweep began
+    reg [N-1:0]  read_now, read_seen;  // nodes read by port A (now, and in this sweep before)
+    reg [7:0]    since [0:N-1];        // cycles since each node's last write (saturating)
+    reg [N-1:0]  ever;                 // written since the reset
     wire         colour   = uidx[0];
     wire         started  = start && !running;
     wire         newsweep = !reset_prev && colour != colour_prev;
     wire         step     = {1'b0, counter} == {1'b0, counter_prev} + 1'b1;
+    wire [15:0]  t_now    = newsweep ? 16'd0 : tsw;  // chain_stream's t
+    wire         early    = t_now < LT + 4;             // a write now is the previous sweep's
+    wire         reading  = running && t_now >= 1 && t_now <= K;  // port A reads at t = 1 .. K
 
-    // this cycle's writes, as a node bitmap, and whether one repeats a node of the sweep
+    // this cycle's reads and writes, as node bitmaps, and the checks on them
     reg [N-1:0]  wr_now;
-    reg          wr_twice, wr_colour_bad, wr_range_bad;
-    integer u;
+    reg          wr_twice, wr_soon, wr_colour_bad, wr_end_bad, wr_range_bad, wr_after_read, wr_first;
+    integer u, v;
     always @* begin
         wr_now = {N{1'b0}};
+        read_now = {N{1'b0}};
         wr_twice = 1'b0;
+        wr_soon = 1'b0;
         wr_colour_bad = 1'b0;
+        wr_end_bad = 1'b0;
         wr_range_bad = 1'b0;
+        wr_after_read = 1'b0;
+        wr_first = 1'b0;
+        for (u = 0; u < M; u = u + 1) if (reading)
+            read_now[u*K + (u % 2 ? rd_idx_down : rd_idx)] = 1'b1;
         for (u = 0; u < M; u = u + 1) if (wr_en[u]) begin
             if (wr_idx_all[u*IW +: IW] >= K) wr_range_bad = 1'b1;
             else begin
-                if (written[u*K + wr_idx_all[u*IW +: IW]] && !newsweep) wr_twice = 1'b1;
-                if (wr_now[u*K + wr_idx_all[u*IW +: IW]]) wr_twice = 1'b1;
-                wr_now[u*K + wr_idx_all[u*IW +: IW]] = 1'b1;
-                if (((u * K + wr_idx_all[u*IW +: IW]) % 2) != colour) wr_colour_bad = 1'b1;
+                v = u * K + wr_idx_all[u*IW +: IW];
+                if (wr_now[v]) wr_twice = 1'b1;
+                wr_now[v] = 1'b1;
+                if (ever[v] && since[v] < SP - 1) wr_soon = 1'b1;
+                // (sweeps and read_seen are this sweep's from the cycle after its first)
+                if (early && sweeps == 0 && !newsweep) wr_first = 1'b1;
+                if (early && (read_now[v] || (read_seen[v] && !newsweep))) wr_after_read = 1'b1;
+                // the colour of the sweep that issued it: the previous one while early
+                if ((v % 2) != (early ? !colour : colour)) wr_colour_bad = 1'b1;
+                // pairwise: the chain's end nodes are each on one link, (0, 1) of colour 0 and
+                // (N-2, N-1) of colour (N-2) mod 2, so only that sweep writes them
+                if (v == 0 && (early ? !colour : colour) != 1'b0) wr_end_bad = 1'b1;
+                if (v == N - 1 && (early ? !colour : colour) != ((N - 2) % 2)) wr_end_bad = 1'b1;
             end
         end
     end
@@ -94,12 +122,19 @@ module stream_props #(
         reset_prev   <= reset;
         colour_prev  <= colour;
         counter_prev <= counter;
-        if (reset || newsweep || started) written <= wr_now;
-        else written <= written | wr_now;
         if (reset || newsweep || started) fec_seen <= fec;
         else if (fec) fec_seen <= 1'b1;
         if (reset || started) sweeps <= 16'd0;
         else if (newsweep || done) sweeps <= sweeps + 16'd1;
+        // t = 0 is the cycle after a start, and the cycle the colour changes
+        if (reset || started) tsw <= 16'd0;
+        else if (newsweep) tsw <= 16'd1;
+        else tsw <= tsw + 16'd1;
+        if (reset || started || newsweep) read_seen <= {N{1'b0}};
+        else read_seen <= read_seen | read_now;
+        for (u = 0; u < N; u = u + 1) since[u] <= wr_now[u] ? 8'd0 : since[u] == 8'hff ? 8'hff : since[u] + 8'd1;
+        if (reset) ever <= {N{1'b0}};
+        else ever <= ever | wr_now;
     end
 
     always @* if (!f_init) begin
@@ -112,8 +147,13 @@ module stream_props #(
             if (counter == 0 && counter_prev != 0) assert (newsweep || counter_prev == SLOTS);
             if (newsweep) assert (fec_seen);
             assert (!wr_twice && !wr_range_bad);
+            assert (!wr_soon);
+            assert (!wr_first);
+            assert (!wr_after_read);
+            assert (wr_en == {M{1'b0}} || running);
             if (RULE == 1'b0) assert (!wr_colour_bad);
-            assert (rd_idx < K && nidx == rd_idx);
+            else assert (!wr_end_bad);
+            assert (rd_idx < K && rd_idx_down < K && nidx == rd_idx);
             if (done) assert (running && fec_seen && sweeps + 16'd1 == 2 * ITER);
         end
         cover (done);
