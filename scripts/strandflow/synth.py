@@ -19,6 +19,7 @@ result from the record when the keys agree, so a fresh checkout of unchanged RTL
 synth's figures without hours of Yosys and nextpnr, and a long run stopped half-way keeps
 what it finished. A *_place flow is taken from the record only when every seed of its place
 and route is there too (nextpnr needs the netlist, which the record does not keep)."""
+import fcntl
 import hashlib
 import json
 import os
@@ -101,7 +102,8 @@ CORE_FLOWS = ["generic", "flat", "ice40", "ecp5", "xilinx"]
 class Record:
     """docs/synth_record.json: {"<build>/<step>": {"key": ..., ...}}, a step being a flow
     (with "modules": each module's num_cells_by_type), pnr_<family>_s<seed> or pack_<family> (nextpnr's
-    outcome). Written whole after every change, under a lock: make synth's workers share it."""
+    outcome). Written whole after every change, under a file lock, merged with what is on disk
+    then: make synth's workers and a `synth.py pnr` run beside it share it."""
 
     def __init__(self, path=RECORD):
         self.path = path
@@ -119,11 +121,17 @@ class Record:
         return entry if entry and entry.get("key") == key else None
 
     def put(self, name, entry):
-        with self.lock:
+        with self.lock, open(self.path + ".lock", "w") as lock:
+            fcntl.flock(lock, fcntl.LOCK_EX)
+            try:  # another process may have added steps since this one read the file
+                with open(self.path) as f:
+                    self.steps.update({k: v for k, v in json.load(f).items() if k != name})
+            except (FileNotFoundError, ValueError):
+                pass
             if self.steps.get(name) == entry:
                 return
             self.steps[name] = entry
-            tmp = self.path + ".tmp"
+            tmp = f"{self.path}.{os.getpid()}.tmp"
             with open(tmp, "w") as f:
                 json.dump(self.steps, f, indent=1, sort_keys=True)
                 f.write("\n")
