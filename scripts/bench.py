@@ -9,7 +9,8 @@ constraint passes; the constraint updates of a frame (node updates of the centre
 divided by them are the updates per clock. The ECP5-85F fmax is the median of make synth's
 nextpnr runs of the same build (build/synth/, or make synth's record docs/synth_record.json
 when it holds them for the same RTL; "not placed" where make synth has not placed it). In the
-same run, build/cpu_rope (model/cpu_rope.c, -O3, one core) runs the same scene in the same order in double and in float, timed; its double frames are the frame engine's
+same run, build/cpu_rope (model/cpu_rope.c, -O3, one core) runs the same scene in the same order in double and in float,
+timed CPU_REPEATS times, the fastest run kept (other work on the machine only slows it); its double frames are the frame engine's
 bit for bit (make test checks it). Then the 1024-node rope (8x128, pipelined): the clock
 that 60 frames per second need at each iteration count, the stretch the frame engine
 reaches with that many iterations, and the iterations it fits at its fmax if placed.
@@ -41,6 +42,7 @@ SPRING_BUILDS = ["4x5", "8x128"]  # tb/bench/springs_<build>.scene: chains of sp
 ROPE = "8x128"            # the 1024-node rope
 ITER_STEPS = [1, 4, 16, 64, 256, 1024]  # its iteration counts in the rope table
 CPU_SECONDS = "1.5"
+CPU_REPEATS = 3           # cpu_rope runs of each row; the fastest is the CPU's figure
 FRAMES = {"4x5": 400, "8x8": 120, "16x16": 30}
 MODES = ["lockstep", "rtl", "model"]
 REPEATS = 3
@@ -89,8 +91,14 @@ def fmax_of(name):
 
 
 def cpu_rate(scene, order, kind):
-    text = sh([os.path.join(BUILD, "cpu_rope"), scene, "--order", order, "--type", kind, "--min-seconds", CPU_SECONDS])
-    return float(re.search(r"updates_per_s=([\d.]+)", text).group(1)), re.search(r'cflags="([^"]*)"', text).group(1)
+    """(updates/s, cflags) of cpu_rope on the scene: the fastest of CPU_REPEATS timed runs, since
+    the machine's other work can only slow a run down and the CPU should get its best figure."""
+    rates = []
+    for _ in range(CPU_REPEATS):
+        text = sh([os.path.join(BUILD, "cpu_rope"), scene, "--order", order, "--type", kind,
+                   "--min-seconds", CPU_SECONDS])
+        rates.append(float(re.search(r"updates_per_s=([\d.]+)", text).group(1)))
+    return max(rates), re.search(r'cflags="([^"]*)"', text).group(1)
 
 
 def physics():
@@ -123,8 +131,9 @@ def physics():
         lines.append(f"| {r['build']} | {r['rule']} | {r['arch']} | {r['nodes']} | {r['cycles']} | {r['per_clock']:.4f} | "
                      f"{r['per_clock_c']:.4f} ({r['per_clock_c'] / r['m']:.3f} M) | {r['mhz_text']} | {mega(r['hw'])} | "
                      f"{mega(r['cpu_d'])} | {mega(r['cpu_f'])} | {ratio} |")
-    notes = ["", f"CPU: `{flags}`, one core, the same scene in the same order; its double frames are the frame "
-                 "engine's bit for bit (`cpu_rope --check`, in make test).", ""]
+    notes = ["", f"CPU: `{flags}`, one core, the same scene in the same order, the fastest of {CPU_REPEATS} timed runs of "
+             f"at least {CPU_SECONDS} s each; its double frames are the frame "
+             "engine's bit for bit (`cpu_rope --check`, in make test).", ""]
     # the largest placed pipelined build against the CPU, and the rope
     pipe = [r for r in rows if r["arch"] == "pipelined" and r["hw"]]
     if pipe:
