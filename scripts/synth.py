@@ -207,6 +207,21 @@ def pct(a, b):
     return f"{100.0 * a / b:.1f}%" if b else "-"
 
 
+def critical_lines(builds, pnr):
+    """Markdown lines: what limits each placed build's clock (nextpnr's post-route critical path
+    of its first seed), [] when no run recorded one."""
+    out = []
+    for b in builds:
+        runs = [r for r in pnr[b]["ecp5"] if r.get("critical")]
+        if runs:
+            c = runs[0]["critical"]
+            nets = ", ".join(f"`{n}`" for n in c["nets"]) or "Yosys-named nets only"
+            out.append(f"- {b}: {c['logic_ns'] + c['routing_ns']:.2f} ns, {c['logic_ns']:.2f} in logic and "
+                       f"{c['routing_ns']:.2f} in routing; the named nets it passes: {nets}.")
+    return (["What limits the clock: nextpnr's post-route critical path (first seed), register to register:", ""]
+            + out + [""]) if out else []
+
+
 def fmax_cells(runs):
     """(per-seed text, median or None) of a build's place-and-route runs."""
     if not all(r.get("fits") for r in runs):
@@ -321,6 +336,8 @@ def report(bdir, gen, out):
           f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))} "
           f"| {seeds} | {f'**{med:.1f}**' if med else '-'} |")
     w("")
+    for line in critical_lines([b for b in MAIN if seeds_of(b)], pnr):
+        w(line)
 
     # the pipelined builds
     w("## The pipelined builds (ARCH = 1) on the ECP5-85F")
@@ -385,6 +402,8 @@ def report(bdir, gen, out):
           f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
           f"| {placed} | {seeds} | {f'**{med:.1f}**' if med else '-'} | {need} |")
     w("")
+    for line in critical_lines([b for b in PIPE if seeds_of(b)], pnr):
+        w(line)
 
     # ice40
     w("## iCE40 UP5K")

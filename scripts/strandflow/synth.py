@@ -303,10 +303,29 @@ def pnr_outcome(text, rc):
     errors = re.findall(r"^ERROR: (.*)$", text, re.M)
     over = {n: u for n, u in util.items() if u[0] > u[1]}
     if rc == 0:
-        return dict(fits=True, util=util, fmax_mhz=fmax[-1][1] if fmax else None)
+        return dict(fits=True, util=util, fmax_mhz=fmax[-1][1] if fmax else None, critical=critical_path(text))
     if over or any("no BELs remaining" in e or "Unable to place" in e or "Failed to expand region" in e for e in errors):
         return dict(fits=False, util=util, over=over, error=errors[0] if errors else "")
     return dict(fits=None, util=util, error=errors[0] if errors else f"nextpnr exited {rc}")
+
+
+def critical_path(text):
+    """The last post-route critical path of the clock in a nextpnr log, as what limits the fmax:
+    {"logic_ns", "routing_ns", "nets": the named nets it passes, in order (the core's
+    hierarchy prefix taken off; Yosys's generated $-names left out)}, or None."""
+    heads = list(re.finditer(r"^Info: Critical path report for clock '[^']*clk[^']*'.*$", text, re.M))
+    if not heads:
+        return None
+    body = text[heads[-1].end():]
+    end = re.search(r"^Info: ([\d.]+) ns logic, ([\d.]+) ns routing", body, re.M)
+    if not end:
+        return None
+    nets = []
+    for net in re.findall(r"^Info:\s+routing\s+[\d.]+\s+[\d.]+\s+Net (\S+)", body[:end.start()], re.M):
+        net = re.sub(r"^(u_axil\.)?u_core\.", "", net)
+        if not net.startswith("$") and net not in nets:
+            nets.append(net)
+    return dict(logic_ns=float(end.group(1)), routing_ns=float(end.group(2)), nets=nets)
 
 
 def place(d, family, seed, build, record=None, offline=False):
