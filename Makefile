@@ -295,9 +295,10 @@ test-scenes: $(STRAND)
 # ---- the RTL against the frame engine, every frame, bit for bit ----
 
 test-rtl-frames: $(STRAND) $(GEN_HDRS)
-	@rc=0; for s in $(RTL_SCENES); do for o in serial redblack; do scripts/top_frames.sh $$s "" $$o || rc=1; done; done; \
-	for s in $(PREV_FRAMES); do for o in serial redblack; do \
-	  scripts/top_frames.sh tb/scenes/previous/$${s%%:*}.scene $${s##*:} $$o || rc=1; done; done; exit $$rc
+	@# JOBS runs at once (each its own directory under $(BUILD)/hw/); one line each, in the order they end
+	@{ for s in $(RTL_SCENES); do for o in serial redblack; do echo "$$s '' $$o"; done; done; \
+	  for s in $(PREV_FRAMES); do for o in serial redblack; do \
+	    echo "tb/scenes/previous/$${s%%:*}.scene $${s##*:} $$o"; done; done; } | xargs -P $(JOBS) -L 1 scripts/top_frames.sh
 	@# the bench checks the status as well as the positions: FEC one cycle late (tb/faults.py delay) must fail it
 	@python3 tb/faults.py delay $(BUILD)/faults/frames_delay && \
 	  out=$$(HW_DIR=$(BUILD)/hw/fault scripts/top_frames.sh tb/scenes/chain_q10_8.scene 5 "" $(BUILD)/faults/frames_delay); \
