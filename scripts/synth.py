@@ -10,7 +10,8 @@ Run from the repository root (tb/synth.mk does):
         the quick check: the generic flow of the 4x5 build only (synth, check -assert,
         no latches); prints one line, PASS or FAIL, and exits non-zero on FAIL.
     synth.py report --build DIR --gen GENDIR --out FILE [SRC...]
-        write FILE from the cached results only (with SRC, first those the record holds).
+        write FILE from the results DIR and the record hold for SRC (default rtl/*.v) and run
+        nothing; a step with none for them reads "not run" (the page lists them at its top).
 
 What is built: strand_core with the defaults of the parameter table (build/gen/
 strand_params.json: Q16.16, a full-precision root and divider, the centred rule,
@@ -240,16 +241,46 @@ def describe(build, gen):
             f"SQRT_BITS={p['SQRT_BITS']}, DIV_BITS={p['DIV_BITS']}")
 
 
-def report(bdir, gen, out):
-    res = {b: {f: load_flow(bdir, b, f) for f in flows_of(b)} for b, _, _ in BUILDS}
+NOT_RUN = "*not run*"  # a step with no result for these sources (report() says which, at the top)
+
+
+def gather(bdir, gen, srcs):
+    """The results this page reads, for these RTL sources only: res[build][flow] and pnr[build][family]
+    (None where the step has no result for them: a stamp of other sources in bdir does not count),
+    the place-and-route packings, and the names of the steps with no result."""
+    record = Record()  # a result it holds for these sources is taken into bdir
+    res = {b: {} for b, _, _ in BUILDS}
     pnr = {b: {} for b, _, _ in BUILDS}
+    packs = {}
+    missing = []
     for b, _, placed in BUILDS:
-        if placed in ("ecp5", "ecp5p") and seeds_of(b):
-            pnr[b]["ecp5"] = load_pnr(bdir, b, "ecp5")
-        if placed != "ecp5p":  # the pipelined builds are not tried on the UP5K
-            pnr[b]["ice40"] = load_pnr(bdir, b, "ice40")
-    yver = sorted({r[f]["tool"] for r in res.values() for f in r if r[f]["tool"]})
-    pver = sorted({nextpnr_short(x.get("tool"), fam) for b in pnr for fam, runs in pnr[b].items() for x in runs})
+        for f in flows_of(b):
+            current = run_flow(b, f, bdir, gen, srcs, record, offline=True) != "missing"
+            res[b][f] = load_flow(bdir, b, f) if current else None
+            missing += [] if current else [f"{b} {f}"]
+        families = (["ecp5"] if placed in ("ecp5", "ecp5p") and seeds_of(b) else []) + \
+                   (["ice40"] if placed != "ecp5p" else [])  # the pipelined builds are not tried on the UP5K
+        for fam in families:
+            place_flow = res[b].get(f"{fam}_place")
+            steps = seeds_of(b) if fam == "ecp5" else SEEDS
+            ok = place_flow is not None and all(run_pnr(b, fam, s, bdir, record, offline=True) != "missing"
+                                                 for s in steps)
+            pnr[b][fam] = load_pnr(bdir, b, fam) if ok else None
+            missing += [] if ok else [f"{b} nextpnr-{fam}"]
+        if b in PIPE_PACK:
+            ok = res[b].get("ecp5_place") is not None and run_pnr(b, "ecp5", None, bdir, record, offline=True) != "missing"
+            packs[b] = load_pack(bdir, b) if ok else None
+            missing += [] if ok else [f"{b} nextpnr-ecp5 packing"]
+    return res, pnr, packs, missing
+
+
+def report(bdir, gen, out, srcs):
+    """Write out from the results for srcs; a step with no result for them shows NOT_RUN. Returns the
+    check build's generic cells and whether they meet the target (None, None when not run)."""
+    res, pnr, packs, missing = gather(bdir, gen, srcs)
+    yver = sorted({r[f]["tool"] for r in res.values() for f in r if r[f] and r[f]["tool"]})
+    pver = sorted({nextpnr_short(x.get("tool"), fam) for b in pnr for fam, runs in pnr[b].items() if runs
+                   for x in runs})
     d = table_defaults(gen)
     L = []
     w = L.append
@@ -261,6 +292,36 @@ def report(bdir, gen, out):
       "this page reads of them is also kept in `docs/synth_record.json`, keyed by the sources' contents, so that a "
       "checkout of the same RTL rewrites this page (and `make bench` finds the fmax) without running the tools again.")
     w("")
+    if missing:
+        w(f"**Incomplete: {len(missing)} step(s) have no result for this RTL**, so their figures read {NOT_RUN} "
+          "(a figure of other sources is never shown): " + ", ".join(missing) + ". `make synth` runs them; "
+          "`scripts/synth.py report` rewrites this page from what the record holds.")
+        w("")
+
+    def counts(b, flow):
+        r = res[b].get(flow)
+        return r["counts"] if r else None
+
+    def cnt(b, flow, pred):
+        k = counts(b, flow)
+        return fmt(pick(k, pred)) if k is not None else NOT_RUN
+
+    def total_of(b, flow):
+        k = counts(b, flow)
+        return fmt(sum(k.values())) if k is not None else NOT_RUN
+
+    def placed_cells(b):
+        kp = counts(b, "ecp5_place")
+        if kp is None:
+            return NOT_RUN
+        return (f"{fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
+                f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))}")
+
+    def fmax_of(b, family):
+        runs = pnr[b].get(family)
+        if runs is None:
+            return NOT_RUN, None
+        return fmax_cells(runs)
     switched = [p["name"] for p in param_table(gen) if p["switch"] and d[p["name"]]]
     w(f"Every build is strand_core with the defaults of its parameter table (scripts/gen_params.py): "
       f"Q{d['W'] - d['F']}.{d['F']} (W={d['W']}), SQRT_BITS={d['SQRT_BITS']}, DIV_BITS={d['DIV_BITS']}, "
@@ -274,25 +335,28 @@ def report(bdir, gen, out):
     for b, o, placed in BUILDS:
         where = {"ecp5": ("ECP5 LFE5U-85F" if seeds_of(b) else "ECP5 LFE5U-85F cells (not placed)")
                  + ", and tried on the UP5K", "ecp5p": "ECP5 LFE5U-85F" if seeds_of(b) else
-                 "generic cells only", "ice40": "iCE40 UP5K"}[placed]
+                 "ECP5 LFE5U-85F cells, packed (not placed)" if b in PIPE_PACK else "generic cells only",
+                 "ice40": "iCE40 UP5K"}[placed]
         w(f"| {b} | {describe(b, gen)}{', ARCH=1 (pipelined)' if placed == 'ecp5p' else ''} | {where} |")
     w("")
 
     # target
-    g = res[CHECK_CONFIG]["generic"]["counts"]
-    total = sum(g.values())
-    flat = sum(res[CHECK_CONFIG]["flat"]["counts"].values())
-    met = total <= TARGET_CELLS
+    g = counts(CHECK_CONFIG, "generic")
+    total = sum(g.values()) if g is not None else None
+    met = total <= TARGET_CELLS if total is not None else None
     w("## Target")
     w("")
     w(f"The {CHECK_CONFIG} build at Q16.16 with a full root and divider should need at most "
       f"{fmt(TARGET_CELLS)} generic cells (hierarchical `synth`; the course project's own RTL needed "
       f"{fmt(COURSE_CELLS)}, with neither a real square root nor a real divider).")
     w("")
-    w(f"Measured: **{fmt(total)} cells, target {'met' if met else 'not met'}**"
-      + ("." if met else f" ({pct(total, TARGET_CELLS)} of the budget).")
-      + f" Flattened (`synth -flatten`): {fmt(flat)} cells. Generic gates have no RAM: the node memories "
-        "count there as flip-flops and multiplexers.")
+    if total is None:
+        w(f"Measured: {NOT_RUN} for this RTL.")
+    else:
+        w(f"Measured: **{fmt(total)} cells, target {'met' if met else 'not met'}**"
+          + ("." if met else f" ({pct(total, TARGET_CELLS)} of the budget).")
+          + f" Flattened (`synth -flatten`): {total_of(CHECK_CONFIG, 'flat')} cells. Generic gates have no RAM: "
+            "the node memories count there as flip-flops and multiplexers.")
     w("")
 
     # generic
@@ -306,9 +370,12 @@ def report(bdir, gen, out):
     w("| build | cells | flip-flops | 2:1 muxes | other gates | flattened |")
     w("|---|--:|--:|--:|--:|--:|")
     for b in MAIN:
-        k = generic_classes(res[b]["generic"]["counts"])
+        if counts(b, "generic") is None:
+            w(f"| {b} | {NOT_RUN} | | | | {total_of(b, 'flat')} |")
+            continue
+        k = generic_classes(counts(b, "generic"))
         w(f"| {b} | {fmt(k['total'])} | {fmt(k['ff'])} | {fmt(k['mux'])} | {fmt(k['other'])} "
-          f"| {fmt(sum(res[b]['flat']['counts'].values()))} |")
+          f"| {total_of(b, 'flat')} |")
     w("")
 
     # ecp5
@@ -325,18 +392,14 @@ def report(bdir, gen, out):
     w("| build | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD | fmax per seed, MHz | median |")
     w("|---|--:|--:|--:|--:|--:|--:|---|---|--:|")
     for b in MAIN:
-        k = res[b]["ecp5"]["counts"]
-        kp = res[b]["ecp5_place"]["counts"]
-        seeds, med = fmax_cells(pnr[b]["ecp5"]) if seeds_of(b) else ("not placed (routing does not finish in this "
-                                                                       "flow's time)", None)
-        w(f"| {b} | {fmt(pick(k, lambda t: t == 'LUT4'))} | {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
-          f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
-          f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
-          f"| {fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
-          f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))} "
-          f"| {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+        seeds, med = fmax_of(b, "ecp5") if seeds_of(b) else ("not placed (routing does not finish in this "
+                                                              "flow's time)", None)
+        w(f"| {b} | {cnt(b, 'ecp5', lambda t: t == 'LUT4')} | {cnt(b, 'ecp5', lambda t: t == 'TRELLIS_FF')} "
+          f"| {cnt(b, 'ecp5', lambda t: t == 'CCU2C')} | {cnt(b, 'ecp5', lambda t: t == 'MULT18X18D')} "
+          f"| {cnt(b, 'ecp5', lambda t: t == 'TRELLIS_DPR16X4')} | {cnt(b, 'ecp5', lambda t: t == 'DP16KD')} "
+          f"| {placed_cells(b)} | {seeds} | {f'**{med:.1f}**' if med else '-'} |")
     w("")
-    for line in critical_lines([b for b in MAIN if seeds_of(b)], pnr):
+    for line in critical_lines([b for b in MAIN if seeds_of(b) and pnr[b].get("ecp5")], pnr):
         w(line)
 
     # the pipelined builds
@@ -344,26 +407,29 @@ def report(bdir, gen, out):
     w("")
     placed_pipe = [b for b in PIPE if seeds_of(b)]
     per_unit = None
-    if placed_pipe:
+    if placed_pipe and counts(placed_pipe[0], "ecp5") is not None:
         b0 = placed_pipe[0]
-        per_unit = pick(res[b0]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / BUILD_MAP[b0][0]["M"]
+        per_unit = pick(counts(b0, "ecp5"), lambda t: t == "MULT18X18D") / BUILD_MAP[b0][0]["M"]
     unplaced_pipe = [b for b in PIPE if not seeds_of(b) and b not in PIPE_PACK]
-    packs = {b: load_pack(bdir, b) for b in PIPE_PACK}
 
     def packed(b):
+        if packs[b] is None:
+            return NOT_RUN
         util = packs[b].get("util", {})
         return "; ".join(f"{n} {fmt(u[0])}/{fmt(u[1])} ({pct(u[0], u[1])})" for n, u in sorted(util.items())
                          if n in ("TRELLIS_COMB", "TRELLIS_FF", "MULT18X18D", "DP16KD"))
 
     def pnr_minutes(b):
-        return ", ".join(f"{r['seconds'] / 60:.0f} min" for r in pnr[b]["ecp5"] if r.get("seconds"))
+        return ", ".join(f"{r['seconds'] / 60:.0f} min" for r in pnr[b]["ecp5"] if r.get("seconds")) \
+            if pnr[b].get("ecp5") else NOT_RUN
 
     w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
       "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical); "
       + (", ".join(f"{b} (place and route: {pnr_minutes(b)})" for b in placed_pipe)
          + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. " if placed_pipe else "")
       + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing only (`--pack-only`), which says whether the design "
-                f"fits the device, {'and it does' if packs[b].get('fits') else 'and it does not'}: {packed(b)}; "
+                f"fits the device{'' if packs[b] is None else ', and it does' if packs[b].get('fits') else ', and it does not'}: "
+                f"{packed(b)}; "
                 "it is not placed (the WebAssembly nextpnr-ecp5 places a design that fills most of the device too "
                 "slowly for make synth). "
                 for b in PIPE_PACK)
@@ -382,27 +448,22 @@ def report(bdir, gen, out):
         mults = BUILD_MAP[b][0]["M"] * per_unit if per_unit else None
         need = f"{mults:g}{'' if mults <= 156 else ' (over 156)'}" if mults else "-"
         if not seeds_of(b) and b not in PIPE_PACK:
-            w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | - | - | - | - | - | - | not synthesised for "
+            w(f"| {b} | {total_of(b, 'generic')} | - | - | - | - | - | - | not synthesised for "
               f"the ECP5 | not placed | - | {need} |")
             continue
-        k = res[b]["ecp5"]["counts"]
         if seeds_of(b):
-            kp = res[b]["ecp5_place"]["counts"]
-            seeds, med = fmax_cells(pnr[b]["ecp5"])
-            placed = (f"{fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
-                      f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))}")
+            seeds, med = fmax_of(b, "ecp5")
+        elif packs[b] is None:
+            seeds, med = NOT_RUN, None
         else:  # packed only
-            kp = res[b]["ecp5_place"]["counts"]
             seeds, med = "packed, not placed" if packs[b].get("fits") else "does not fit", None
-            placed = (f"{fmt(pick(kp, lambda t: t == 'LUT4'))} ({pct(pick(kp, lambda t: t == 'LUT4'), ECP5_85_LUTS)}) / "
-                      f"{fmt(pick(kp, lambda t: t == 'TRELLIS_FF'))} / {fmt(pick(kp, lambda t: t == 'DP16KD'))}")
-        w(f"| {b} | {fmt(sum(res[b]['generic']['counts'].values()))} | {fmt(pick(k, lambda t: t == 'LUT4'))} "
-          f"| {fmt(pick(k, lambda t: t == 'TRELLIS_FF'))} "
-          f"| {fmt(pick(k, lambda t: t == 'CCU2C'))} | {fmt(pick(k, lambda t: t == 'MULT18X18D'))} "
-          f"| {fmt(pick(k, lambda t: t == 'TRELLIS_DPR16X4'))} | {fmt(pick(k, lambda t: t == 'DP16KD'))} "
-          f"| {placed} | {seeds} | {f'**{med:.1f}**' if med else '-'} | {need} |")
+        w(f"| {b} | {total_of(b, 'generic')} | {cnt(b, 'ecp5', lambda t: t == 'LUT4')} "
+          f"| {cnt(b, 'ecp5', lambda t: t == 'TRELLIS_FF')} "
+          f"| {cnt(b, 'ecp5', lambda t: t == 'CCU2C')} | {cnt(b, 'ecp5', lambda t: t == 'MULT18X18D')} "
+          f"| {cnt(b, 'ecp5', lambda t: t == 'TRELLIS_DPR16X4')} | {cnt(b, 'ecp5', lambda t: t == 'DP16KD')} "
+          f"| {placed_cells(b)} | {seeds} | {f'**{med:.1f}**' if med else '-'} | {need} |")
     w("")
-    for line in critical_lines([b for b in PIPE if seeds_of(b)], pnr):
+    for line in critical_lines([b for b in PIPE if seeds_of(b) and pnr[b].get("ecp5")], pnr):
         w(line)
 
     # ice40
@@ -420,19 +481,24 @@ def report(bdir, gen, out):
     for b, _, p in BUILDS:
         if p == "ecp5p":
             continue
-        k = res[b]["ice40"]["counts"]
         runs = pnr[b]["ice40"]
-        seeds, med = fmax_cells(runs)
-        util = runs[0].get("util", {})
-        lc, ram = util.get("ICESTORM_LC", [0, UP5K_LC]), util.get("ICESTORM_RAM", [0, 30])
+        seeds, med = fmax_of(b, "ice40")
+        if runs:
+            util = runs[0].get("util", {})
+            lc, ram = util.get("ICESTORM_LC", [0, UP5K_LC]), util.get("ICESTORM_RAM", [0, 30])
+            placed = f"{fmt(lc[0])} ({pct(lc[0], lc[1])}) / {fmt(ram[0])}"
+        else:
+            placed = NOT_RUN
         if med is not None:
             fits.append((b, med))
-        w(f"| {b} | {fmt(pick(k, lambda t: t == 'SB_LUT4'))} | {fmt(pick(k, lambda t: t.startswith('SB_DFF')))} "
-          f"| {fmt(pick(k, lambda t: t == 'SB_CARRY'))} | {fmt(pick(k, lambda t: t == 'SB_MAC16'))} "
-          f"| {fmt(pick(k, lambda t: t.startswith('SB_RAM40_4K')))} "
-          f"| {fmt(lc[0])} ({pct(lc[0], lc[1])}) / {fmt(ram[0])} | {seeds} | {f'**{med:.1f}**' if med else '-'} |")
+        w(f"| {b} | {cnt(b, 'ice40', lambda t: t == 'SB_LUT4')} | {cnt(b, 'ice40', lambda t: t.startswith('SB_DFF'))} "
+          f"| {cnt(b, 'ice40', lambda t: t == 'SB_CARRY')} | {cnt(b, 'ice40', lambda t: t == 'SB_MAC16')} "
+          f"| {cnt(b, 'ice40', lambda t: t.startswith('SB_RAM40_4K'))} "
+          f"| {placed} | {seeds} | {f'**{med:.1f}**' if med else '-'} |")
     w("")
-    if fits:
+    if any(pnr[b]["ice40"] is None for b, _, p in BUILDS if p != "ecp5p"):
+        w("Which build is the largest that fits the UP5K is not known until every candidate is placed.")
+    elif fits:
         b, med = fits[0]
         w(f"The largest build that fits the UP5K: **{b}** ({describe(b, gen)}), median fmax **{med:.1f} MHz** "
           f"(goal 40 MHz: {'met' if med >= 40 else 'not met'}). Builds are listed largest first.")
@@ -449,12 +515,11 @@ def report(bdir, gen, out):
     w("| build | LUTs | FFs | CARRY4 | DSP48E1 | LUT RAM | RAMB18E1 | RAMB36E1 |")
     w("|---|--:|--:|--:|--:|--:|--:|--:|")
     for b in MAIN:
-        k = res[b]["xilinx"]["counts"]
-        w(f"| {b} | {fmt(pick(k, lambda t: re.fullmatch(r'LUT[1-6]', t) is not None))} "
-          f"| {fmt(pick(k, lambda t: t.startswith('FD')))} | {fmt(pick(k, lambda t: t == 'CARRY4'))} "
-          f"| {fmt(pick(k, lambda t: t == 'DSP48E1'))} "
-          f"| {fmt(pick(k, lambda t: re.match(r'RAM(32|64|128)', t) is not None))} "
-          f"| {fmt(pick(k, lambda t: t == 'RAMB18E1'))} | {fmt(pick(k, lambda t: t == 'RAMB36E1'))} |")
+        w(f"| {b} | {cnt(b, 'xilinx', lambda t: re.fullmatch(r'LUT[1-6]', t) is not None)} "
+          f"| {cnt(b, 'xilinx', lambda t: t.startswith('FD'))} | {cnt(b, 'xilinx', lambda t: t == 'CARRY4')} "
+          f"| {cnt(b, 'xilinx', lambda t: t == 'DSP48E1')} "
+          f"| {cnt(b, 'xilinx', lambda t: re.match(r'RAM(32|64|128)', t) is not None)} "
+          f"| {cnt(b, 'xilinx', lambda t: t == 'RAMB18E1')} | {cnt(b, 'xilinx', lambda t: t == 'RAMB36E1')} |")
     w("")
 
     # block RAM
@@ -469,52 +534,53 @@ def report(bdir, gen, out):
     w("| build | K (words a memory) | iCE40 SB_RAM40_4K | ECP5 DP16KD | ECP5 DPR16X4 | Xilinx RAMB18/36 |")
     w("|---|--:|--:|--:|--:|--:|")
     for b, _, _ in BUILDS:
-        r = res[b]
-        ice = pick(r["ice40"]["counts"], lambda t: t.startswith("SB_RAM40_4K")) if "ice40" in r else None
-        ecp = pick(r["ecp5"]["counts"], lambda t: t == "DP16KD") if "ecp5" in r else None
-        dpr = pick(r["ecp5"]["counts"], lambda t: t == "TRELLIS_DPR16X4") if "ecp5" in r else None
-        xil = pick(r["xilinx"]["counts"], lambda t: t.startswith("RAMB")) if "xilinx" in r else None
-        na = "-"
-        w(f"| {b} | {full_params(b, gen)['K']} | {fmt(ice) if ice is not None else na} | {fmt(ecp) if ecp is not None else na} "
-          f"| {fmt(dpr) if dpr is not None else na} | {fmt(xil) if xil is not None else na} |")
+        def ram(flow, pred):
+            return cnt(b, flow, pred) if flow in res[b] else "-"  # "-": the build has no such flow
+        w(f"| {b} | {full_params(b, gen)['K']} | {ram('ice40', lambda t: t.startswith('SB_RAM40_4K'))} "
+          f"| {ram('ecp5', lambda t: t == 'DP16KD')} | {ram('ecp5', lambda t: t == 'TRELLIS_DPR16X4')} "
+          f"| {ram('xilinx', lambda t: t.startswith('RAMB'))} |")
     w("")
 
     # where the cells go
     gen_r = res[CHECK_CONFIG]["generic"]
-    rows = hierarchy_rows(gen_r["mods"], gen_r["top"])
     w(f"## Where the cells go ({CHECK_CONFIG}, generic gates)")
     w("")
-    w("Per module, from `stat` on the hierarchical netlist. *Own* cells are a module's gates and "
-      "flip-flops without its submodules; *subtree* adds them. Shares are of the whole design.")
-    w("")
-    w("| module | instances (per parent) | own cells each | of which flip-flops | of which muxes "
-      "| subtree cells each | subtree, all instances | share |")
-    w("|---|--:|--:|--:|--:|--:|--:|--:|")
-    for r in rows:
-        name = "&nbsp;&nbsp;" * (2 * r["depth"]) + r["name"]
-        n = r["instances"]
-        w(f"| {name} | {fmt(n)} ({fmt(r['per_parent'])}) | {fmt(round(r['own'] / n))} | {fmt(round(r['own_ff'] / n))} "
-          f"| {fmt(round(r['own_mux'] / n))} | {fmt(round(r['subtree'] / n))} | {fmt(r['subtree'])} "
-          f"| {pct(r['subtree'], total)} |")
-    w("")
-    kinds = {}
-    for r in rows:
-        k = kinds.setdefault(r["name"], dict(instances=0, cells=0, ff=0, mux=0))
-        k["instances"] += r["instances"]
-        k["cells"] += r["own"]
-        k["ff"] += r["own_ff"]
-        k["mux"] += r["own_mux"]
-    w("In plain words, summing each module's own cells over all its instances, largest first:")
-    w("")
-    for name, k in sorted(kinds.items(), key=lambda kv: -kv[1]["cells"]):
-        w(f"- **{name}**: {fmt(k['cells'])} cells ({pct(k['cells'], total)}) in {fmt(k['instances'])} "
-          f"instance{'s' if k['instances'] != 1 else ''}, {fmt(k['cells'] // max(k['instances'], 1))} each; "
-          f"{fmt(k['ff'])} flip-flops and {fmt(k['mux'])} 2:1 muxes among them.")
-    w("")
-    per_node = [(b, full_params(b, gen)["M"] * full_params(b, gen)["K"], sum(res[b]["generic"]["counts"].values()))
-                for b in MAIN]
-    w("Generic cells per node: " + ", ".join(f"{b} {fmt(t // n)}" for b, n, t in per_node) + ".")
-    w("")
+    if gen_r is None:
+        w(f"{NOT_RUN} for this RTL.")
+        w("")
+    else:
+        rows = hierarchy_rows(gen_r["mods"], gen_r["top"])
+        w("Per module, from `stat` on the hierarchical netlist. *Own* cells are a module's gates and "
+          "flip-flops without its submodules; *subtree* adds them. Shares are of the whole design.")
+        w("")
+        w("| module | instances (per parent) | own cells each | of which flip-flops | of which muxes "
+          "| subtree cells each | subtree, all instances | share |")
+        w("|---|--:|--:|--:|--:|--:|--:|--:|")
+        for r in rows:
+            name = "&nbsp;&nbsp;" * (2 * r["depth"]) + r["name"]
+            n = r["instances"]
+            w(f"| {name} | {fmt(n)} ({fmt(r['per_parent'])}) | {fmt(round(r['own'] / n))} | {fmt(round(r['own_ff'] / n))} "
+              f"| {fmt(round(r['own_mux'] / n))} | {fmt(round(r['subtree'] / n))} | {fmt(r['subtree'])} "
+              f"| {pct(r['subtree'], total)} |")
+        w("")
+        kinds = {}
+        for r in rows:
+            k = kinds.setdefault(r["name"], dict(instances=0, cells=0, ff=0, mux=0))
+            k["instances"] += r["instances"]
+            k["cells"] += r["own"]
+            k["ff"] += r["own_ff"]
+            k["mux"] += r["own_mux"]
+        w("In plain words, summing each module's own cells over all its instances, largest first:")
+        w("")
+        for name, k in sorted(kinds.items(), key=lambda kv: -kv[1]["cells"]):
+            w(f"- **{name}**: {fmt(k['cells'])} cells ({pct(k['cells'], total)}) in {fmt(k['instances'])} "
+              f"instance{'s' if k['instances'] != 1 else ''}, {fmt(k['cells'] // max(k['instances'], 1))} each; "
+              f"{fmt(k['ff'])} flip-flops and {fmt(k['mux'])} 2:1 muxes among them.")
+        w("")
+        per_node = [(b, full_params(b, gen)["M"] * full_params(b, gen)["K"], sum(counts(b, "generic").values()))
+                    for b in MAIN if counts(b, "generic") is not None]
+        w("Generic cells per node: " + ", ".join(f"{b} {fmt(t // n)}" for b, n, t in per_node) + ".")
+        w("")
 
     w("## How to regenerate")
     w("")
@@ -605,7 +671,7 @@ def cmd_all(a):
     if failures:
         print(f"FAIL synth: {len(failures)} step(s) failed; {a.out} not written", file=sys.stderr)
         return 1
-    total, met = report(a.build, a.gen, a.out)
+    total, met = report(a.build, a.gen, a.out, srcs)
     print(f"synth: wrote {a.out} in {time.time() - t0:.0f} s; {CHECK_CONFIG}: {fmt(total)} generic cells, "
           f"target of {fmt(TARGET_CELLS)} {'met' if met else 'not met'}")
     return 0
@@ -665,7 +731,7 @@ def main():
     s.add_argument("--build", default="build/synth")
     s.add_argument("--gen", default="build/gen")
     s.add_argument("--out", default="docs/resources.md")
-    s.add_argument("srcs", nargs="*", help="the RTL sources: with them, the record's results for them first")
+    s.add_argument("srcs", nargs="*", help="the RTL sources (default rtl/*.v): only results for them are shown")
     s = sub.add_parser("pnr", help="place and route one build whose place flow is done (a make synth run "
                                    "beside it waits for the result instead of placing it again)")
     s.add_argument("name")
@@ -682,9 +748,7 @@ def main():
             print(f"synth {a.name} pnr {a.family} s{a.seed}: {run_pnr(a.name, a.family, a.seed, a.build, Record())}")
             return 0
         if a.cmd == "report":
-            if a.srcs:
-                restore(a.build, a.gen, a.srcs)
-            total, met = report(a.build, a.gen, a.out)
+            report(a.build, a.gen, a.out, a.srcs or rtl_sources())
             print(f"wrote {a.out}")
             return 0
         if a.cmd == "check":
