@@ -145,20 +145,10 @@ def rtl_sources():
     return sorted(os.path.relpath(p, ROOT) for p in glob.glob(os.path.join(ROOT, "rtl", "*.v")))
 
 
-def restore(bdir, gen, srcs, record=None):
+def restore(bdir, gen, srcs):
     """Take every step's result the record holds for these sources into bdir (nothing runs);
     the number of steps still missing."""
-    record = record or Record()
-    missing = 0
-    for b, _, placed in BUILDS:
-        for f in flows_of(b):
-            missing += run_flow(b, f, bdir, gen, srcs, record, offline=True) == "missing"
-        for family in ("ecp5", "ice40"):
-            if not os.path.exists(os.path.join(bdir, b, f"{family}_place.ok")):
-                continue
-            for s in (ecp5_steps(b) if family == "ecp5" else SEEDS):
-                missing += run_pnr(b, family, s, bdir, record, offline=True) == "missing"
-    return missing
+    return len(gather(bdir, gen, srcs)[3])
 
 
 # ---- place and route ----
