@@ -22,6 +22,10 @@ static fx_t from_word(const fx_format *fmt, uint32_t w)
 
 static uint32_t to_word(const fx_format *fmt, fx_t v) { return hw_word(fmt, v); }
 
+/* the pipelined passes: a chain's (chain_stream, spring_stream) and a graph's rods (graph_stream) */
+static bool chain_streams(const hw_params *hp) { return hp->arch && !hp->graph; }
+static bool graph_streams(const hw_params *hp) { return hp->arch && hp->graph && hp->en_constraints; }
+
 bool cyc_init(cyc_model *c, const hw_params *hp)
 {
     int n = hp->m * hp->k;
@@ -82,7 +86,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     if (!sc->pos || !sc->prev || !sc->pinned || !sim_fx_init(&c->s, sc, &sc->fmt)) return false;
     c->lt = (int)hw_toward_latency(hp);
     c->lp = (int)hw_toward_pipe_latency(hp);
-    if (hp->arch) {
+    if (hp->arch && !hp->graph) {
         c->st_period = (int)hw_stream_period(hp);
         c->st_last = (int)hw_stream_last(hp);
         for (int b = 0; b < 2; b++) {
@@ -90,6 +94,12 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
             c->st_pos[b] = calloc((size_t)n, sizeof *c->st_pos[b]);
             if (!c->st_pend[b] || !c->st_pos[b]) return false;
         }
+    }
+    if (graph_streams(hp)) {
+        c->gs_colour_end = calloc((size_t)hp->e_rods, sizeof *c->gs_colour_end);
+        c->gs_ring = malloc((size_t)(c->lp + 1) * sizeof *c->gs_ring);
+        if (!c->gs_colour_end || !c->gs_ring) return false;
+        for (int i = 0; i <= c->lp; i++) c->gs_ring[i] = -1;
     }
     c->ls = (int)hw_spring_latency(hp);
     c->lsp = (int)hw_spring_pipe_latency(hp);
@@ -104,6 +114,10 @@ void cyc_free(cyc_model *c)
         c->st_pend[b] = NULL;
         c->st_pos[b] = NULL;
     }
+    free(c->gs_colour_end);
+    free(c->gs_ring);
+    c->gs_colour_end = NULL;
+    c->gs_ring = NULL;
     sim_fx_free(&c->s);
     scene_free(&c->sc);
 }
@@ -126,9 +140,10 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
     const int fec_at = c->hp.graph ? c->hp.e_rods : m * c->hp.k - (c->hp.rule ? 1 : 0);
     o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == fec_at;
-    if (c->hp.arch && c->hp.en_constraints) o->fec = c->st_counter == c->hp.k + 1; /* chain_stream: every slot issued */
+    if (chain_streams(&c->hp) && c->hp.en_constraints) o->fec = c->st_counter == c->hp.k + 1; /* chain_stream: every slot issued */
+    if (graph_streams(&c->hp)) o->fec = c->gs_counter == c->hp.e_rods; /* graph_stream: every edge of the pass read */
     /* strand_core shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
-    if (c->phase == PH_FORCE && c->hp.arch) { /* spring_stream: 0, port A's address, the slots issued */
+    if (c->phase == PH_FORCE && chain_streams(&c->hp)) { /* spring_stream: 0, port A's address, the slots issued */
         int k = c->hp.k, t = c->sp_t;
         o->uidx = 0;
         o->nidx = !c->sp_running || t > k ? 0u : t == 0 ? (uint32_t)(k - 1) : (uint32_t)(t - 1);
@@ -137,6 +152,10 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
         o->uidx = (uint32_t)c->force.uidx;
         o->nidx = (uint32_t)c->force.nidx;
         o->counter = (uint32_t)c->force.counter;
+    } else if (graph_streams(&c->hp)) { /* graph_stream: the current edge's a, the edges read */
+        o->uidx = (uint32_t)(c->gs_a / c->hp.k);
+        o->nidx = (uint32_t)(c->gs_a % c->hp.k);
+        o->counter = (uint32_t)c->gs_counter;
     } else if (c->hp.arch) { /* chain_stream: the colour, port A's address, the slots issued */
         int k = c->hp.k, t = c->st_t;
         o->uidx = (uint32_t)c->st_colour;
@@ -200,6 +219,12 @@ static void reset_all(cyc_model *c)
         }
         c->fill[0] = c->fill[1] = 0;
     }
+    c->gs_state = GS_IDLE;
+    c->gs_j = c->gs_iter = c->gs_drain = c->gs_counter = c->gs_a = 0;
+    c->gs_issue = c->gs_done = c->gs_write_b = false;
+    if (c->gs_colour_end) memset(c->gs_colour_end, 0, (size_t)c->hp.e_rods * sizeof *c->gs_colour_end);
+    if (c->gs_ring)
+        for (int i = 0; i <= c->lp; i++) c->gs_ring[i] = -1;
     c->running = c->done = false;
     c->vidx = 0;
     c->pass_b = c->pass_c = c->pass_d = false;
@@ -254,6 +279,7 @@ static void edge_write(cyc_model *c, uint32_t data)
     c->sc.edges[e].a = a < 0 ? 0 : a;
     c->sc.edges[e].b = b < 0 ? 0 : b;
     c->s.rest[e] = c->edge_rest;
+    if (c->gs_colour_end && !spring) c->gs_colour_end[e] = 2 * aw + 1 < hp->w && (data >> (2 * aw + 1) & 1u);
 }
 
 /*
@@ -425,6 +451,92 @@ static void stream_write(cyc_model *c, bool *written, int colour, int s)
     }
 }
 
+/*
+ * graph_stream: the writes of the edge whose result leaves the pipe (a now, b the cycle
+ * after), then the control. Within a colour no edge shares a node with another, and the
+ * previous colour's writes have all landed before this one's first read, so each edge is
+ * computed in its write cycle, from the storage as it is then, with the frame engine's
+ * pair_edge() (the same result as at its reads).
+ */
+static void graph_stream_edge(cyc_model *c, bool start, bool *written)
+{
+    const hw_params *hp = &c->hp;
+    const int k = hp->k, edges = hp->e_rods;
+    const int out = c->gs_ring[c->gs_ring_pos];
+    if (out >= 0) { /* pair_edge() now; b's half is written next cycle */
+        const int a = c->sc.edges[out].a, b = c->sc.edges[out].b;
+        bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
+        c->gs_write_b = false;
+        if (!(fa && fb)) {
+            long skipped = c->s.skipped;
+            fx_t b_old[3];
+            memcpy(b_old, c->s.pos[b], sizeof b_old);
+            sim_fx_pair_edge(&c->s, out);
+            bool valid = c->s.skipped == skipped;
+            memcpy(c->gs_b_new, c->s.pos[b], sizeof c->gs_b_new);
+            memcpy(c->s.pos[b], b_old, sizeof b_old);
+            if (valid && !fa) lane_write(c, written, a / k, a % k, a);
+            c->gs_write_b = valid && !fb;
+            c->gs_b_node = b;
+        }
+    } else if (c->gs_write_b) {
+        const int b = c->gs_b_node;
+        memcpy(c->s.pos[b], c->gs_b_new, sizeof c->gs_b_new);
+        lane_write(c, written, b / k, b % k, b);
+        c->gs_write_b = false;
+    }
+    /* the edge that enters the pipe now (b arrives) is the one read in S_A and S_B */
+    c->gs_ring[c->gs_ring_pos] = c->gs_issue ? c->gs_edge : -1;
+    c->gs_ring_pos = c->gs_ring_pos == c->lp ? 0 : c->gs_ring_pos + 1;
+
+    const bool drained = c->gs_state == GS_DRAIN && c->gs_drain == 0;
+    const bool pass_end = drained && c->gs_j == 0;
+    const bool last_iter = c->gs_iter == hp->iter - 1;
+    const int j_next = c->gs_j == edges - 1 ? 0 : c->gs_j + 1;
+    c->gs_done = pass_end && last_iter;
+    c->gs_issue = c->gs_state == GS_B;
+    switch (c->gs_state) {
+    case GS_IDLE:
+        if (start) {
+            c->gs_state = GS_A;
+            c->gs_j = c->gs_iter = c->gs_counter = 0;
+            c->gs_entry = 0;
+        }
+        break;
+    case GS_A: /* entries not filled are zero edges (node 0 to node 0, rest 0) with no colour end */
+        c->gs_state = GS_B;
+        c->gs_edge = c->gs_entry;
+        c->gs_a = c->sc.edges[c->gs_entry].a;
+        c->gs_last = c->gs_colour_end[c->gs_entry] || c->gs_j == edges - 1;
+        break;
+    case GS_B:
+        c->gs_counter++;
+        c->gs_j = j_next;
+        c->gs_entry = j_next;
+        if (c->gs_last) {
+            c->gs_state = GS_DRAIN;
+            c->gs_drain = c->lp + 2;
+        } else {
+            c->gs_state = GS_A;
+        }
+        break;
+    case GS_DRAIN:
+        c->gs_drain--;
+        if (drained) {
+            if (pass_end && last_iter) {
+                c->gs_state = GS_IDLE;
+            } else {
+                c->gs_state = GS_A;
+                if (pass_end) {
+                    c->gs_iter++;
+                    c->gs_counter = 0;
+                }
+            }
+        }
+        break;
+    }
+}
+
 void cyc_edge(cyc_model *c, const cyc_inputs *in)
 {
     const hw_params *hp = &c->hp;
@@ -445,8 +557,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph;
     const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
     const bool verlet_end = c->phase == PH_VERLET && c->done;
-    const bool seq_done = hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
-    const bool force_done = hp->arch ? c->sp_done : c->force.done;
+    const bool seq_done = graph_streams(hp) ? c->gs_done : hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
+    const bool force_done = chain_streams(hp) ? c->sp_done : c->force.done;
     const bool body_end = hp->en_constraints ? c->phase == PH_CONSTRAIN && seq_done : verlet_end;
     const bool ground_start = body_end && hp->en_ground;
     const bool substep_end = hp->en_ground ? c->phase == PH_GROUND && c->done : body_end;
@@ -509,7 +621,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     }
     /* chain_stream: a sweep's writes are planned as it starts and land in their cycles, the
        previous sweep's (SP cycles along) while this one starts. */
-    if (hp->arch && c->st_running) {
+    if (chain_streams(hp) && c->st_running) {
         if (c->st_t == 0) stream_plan(c);
         stream_write(c, written, c->st_colour, c->st_t - 4 - c->lp);
         stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 4 - c->lp);
@@ -522,9 +634,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
 
     if (!hp->arch && hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
-    if (hp->en_springs && !hp->arch) pair_seq_edge(c, &c->force, force_start, true, written);
+    if (hp->en_springs && !chain_streams(hp)) pair_seq_edge(c, &c->force, force_start, true, written);
+    if (graph_streams(hp)) graph_stream_edge(c, seq_start, written);
     /* spring_stream: the forces of the pass, gathered in link order as it starts; then its control */
-    if (hp->en_springs && hp->arch) {
+    if (hp->en_springs && chain_streams(hp)) {
         const int sweep = (int)hw_spring_sweep(hp);
         const bool slot = c->sp_running && c->sp_t >= 2 && c->sp_t <= k + 2;
         const bool sweep_end = c->sp_running && c->sp_t == sweep - 1;
@@ -546,7 +659,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
 
     /* chain_stream control: sweeps of SP cycles (the last of the pass SL), colour 0 then 1,
        ITER times. */
-    if (hp->arch && hp->en_constraints) {
+    if (chain_streams(hp) && hp->en_constraints) {
         const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
         const int sweep = last ? c->st_last : c->st_period;
         const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k + 2;

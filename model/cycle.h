@@ -28,6 +28,7 @@ extern "C" {
 enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4, PH_GROUND = 5, PH_GRAB = 6 };
 enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
 enum { PQ_IDLE, PQ_RD_A, PQ_RD_B, PQ_GO, PQ_WAIT, PQ_WR_A, PQ_WR_B };                 /* pair_sequencer */
+enum { GS_IDLE, GS_A, GS_B, GS_DRAIN };                                                /* graph_stream */
 
 /* The inputs of strand_core during one cycle (all W-bit words raw). */
 typedef struct {
@@ -117,6 +118,18 @@ typedef struct {
     int lsp;     /* spring_force_pipe's latency */
     bool sp_running, sp_done;
     int sp_t, sp_counter;
+    /* graph_stream (ARCH = 1, GRAPH): its state, the edge on the memory's output and the one
+       between its reads, the pass's edges read; the pipe is a ring of LP + 1 slots (an edge
+       issued now has its a written LP + 1 cycles later, its b the cycle after) */
+    int gs_state, gs_j, gs_iter, gs_drain, gs_counter;
+    int gs_entry;         /* the memory's output: this edge's entry */
+    int gs_edge, gs_a;    /* the edge between its reads (from S_A), its a */
+    bool gs_last, gs_issue, gs_done;
+    bool *gs_colour_end;  /* per rod memory entry: the EDGE word's colour end (reset: 0) */
+    int *gs_ring, gs_ring_pos;
+    bool gs_write_b;      /* b's new position waits a cycle for its write */
+    int gs_b_node;
+    fx_t gs_b_new[3];
     cyc_pair_seq pair;   /* pair_sequencer, the constraints (rule 1) */
     cyc_pair_seq force;  /* pair_sequencer, the spring pass (EN_SPRINGS) */
 } cyc_model;

@@ -86,9 +86,10 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->projection = hp->en_constraints && sc->projection == PROJECTION_PREVIOUS;
     hp->en_springs = sc->en_springs && (!hp->graph || hp->e_springs > 0);
     /* red/black: a chain's constraints stream through the pipelined pass, and so do its springs
-       (their gathering keeps the link order); a graph's edges, already in colour order
-       (scene_set_order), take the serial passes */
-    hp->arch = (hp->en_constraints || hp->en_springs) && !hp->graph && sc->order == ORDER_REDBLACK;
+       (their gathering keeps the link order); a graph's rods, already in colour order
+       (scene_set_order), stream colour by colour (graph_stream), its springs take the serial pass */
+    hp->arch = (hp->en_constraints || (hp->en_springs && !hp->graph)) && sc->order == ORDER_REDBLACK;
+    hp->colours = hp->arch && hp->graph ? sc->n_colours : 1;
     if (hp->e_rods < 1) hp->e_rods = 1; /* the memories' sizes: at least one entry (unused in a chain) */
     if (hp->e_springs < 1) hp->e_springs = 1;
     hp->en_ground = sc->en_ground;
@@ -150,7 +151,10 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
             const scene_edge *ed = &sc->edges[e];
             uint32_t aw = (uint32_t)(hp.uw + hp.iw);
             PUT(STRAND_REG_EDGE_REST, s->rest[e]);
-            PUT(STRAND_REG_EDGE, (fx_t)((uint32_t)(ed->kind == EDGE_SPRING) << (2 * aw) |
+            /* graph_stream (ARCH): bit 2 AW + 1 marks a rod that ends its colour */
+            bool colour_end = hp.arch && ed->kind != EDGE_SPRING &&
+                              (e + 1 == sc->n_edges || sc->edges[e + 1].kind == EDGE_SPRING || sc->edges[e + 1].colour != ed->colour);
+            PUT(STRAND_REG_EDGE, (fx_t)((uint32_t)colour_end << (2 * aw + 1) | (uint32_t)(ed->kind == EDGE_SPRING) << (2 * aw) |
                                         hw_node_addr(&hp, ed->b) << aw | hw_node_addr(&hp, ed->a)));
         }
     } else {

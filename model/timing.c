@@ -68,9 +68,17 @@ long hw_stream_last(const hw_params *hp)
     return hp->k + hw_toward_pipe_latency(hp) + 4;
 }
 
+/* the pipelined passes: a chain's (chain_stream, spring_stream) and a graph's rods (graph_stream) */
+static bool chain_streams(const hw_params *hp) { return hp->arch && !hp->graph; }
+static bool graph_streams(const hw_params *hp) { return hp->arch && hp->graph && hp->en_constraints; }
+
 long hw_constraint_pass(const hw_params *hp)
 {
     long n = node_count(hp), rods = hp->graph ? hp->e_rods : n - 1;
+    if (graph_streams(hp)) /* graph_stream: two cycles an edge, and the pipe drained after each colour
+                              (the colour's last b written LP + 4 cycles after its first read; the
+                              next colour reads the cycle after) */
+        return 2 * rods + hp->colours * (hw_toward_pipe_latency(hp) + 3);
     if (hp->arch) /* chain_stream: two sweeps, even then odd (the pass's last sweep: hw_stream_last) */
         return 2 * hw_stream_period(hp);
     if (hp->rule == 0) /* chain_sequencer: load C and D, then per node two targets and the slide */
@@ -81,7 +89,7 @@ long hw_constraint_pass(const hw_params *hp)
 long hw_spring_pass(const hw_params *hp)
 {
     long springs = hp->graph ? hp->e_springs : node_count(hp) - 1;
-    if (hp->arch) /* spring_stream: the start cycle, one sweep */
+    if (chain_streams(hp)) /* spring_stream: the start cycle, one sweep */
         return 1 + hw_spring_sweep(hp);
     return 1 + springs * (hw_spring_latency(hp) + 5); /* pair_sequencer SPRING: as pairwise, per link */
 }
@@ -93,7 +101,7 @@ static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constrain
 static long constrain_phase(const hw_params *hp)
 {
     if (!hp->en_constraints) return 0;
-    if (hp->arch) /* 2 ITER sweeps, the last one to its drain */
+    if (chain_streams(hp)) /* 2 ITER sweeps, the last one to its drain */
         return (2L * hp->iter - 1) * hw_stream_period(hp) + hw_stream_last(hp);
     return hp->iter * hw_constraint_pass(hp);
 }
@@ -110,7 +118,7 @@ long hw_cycles_per_frame(const hw_params *hp)
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
     char pipe[128] = "", last[96] = "";
-    if (hp->arch && hp->en_constraints) /* the pass's last sweep runs to its drain */
+    if (chain_streams(hp) && hp->en_constraints) /* the pass's last sweep runs to its drain */
         snprintf(last, sizeof last, "; a substep's last sweep SL = K + LP + 4 = %ld", hw_stream_last(hp));
     if (hp->arch && hp->en_constraints)
         snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
@@ -126,10 +134,12 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hp->projection ? "toward_prev" : "toward",
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
-                    hp->arch ? "2 sweeps of SP = max(K + 3, LP + 4) (pipelined)" : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
+                    graph_streams(hp) ? "2 E_RODS + COLOURS (LP + 3) (pipelined graph)"
+                    : hp->arch        ? "2 sweeps of SP = max(K + 3, LP + 4) (pipelined)"
+                    : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
-                    hp->arch ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
-                    hw_spring_pass(hp), hp->arch ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes",
+                    chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
+                    hw_spring_pass(hp), chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes",
                     verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

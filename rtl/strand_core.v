@@ -16,6 +16,9 @@
  *     chain_sequencer  the centred rule (RULE 0) over the chain, through `toward`
  *     pair_sequencer   the pairwise rule (RULE 1) over links or a rod memory (GRAPH),
  *                      and, SPRING mode, the spring pass over links or a spring memory
+ *     chain_stream     ARCH 1: the pipelined constraint pass over a chain (red/black)
+ *     graph_stream     ARCH 1, GRAPH: the pipelined pass over the rod memory, by colour
+ *     spring_stream    ARCH 1, a chain with springs: the pipelined spring pass
  *
  * Ports: what a system integrator needs. After reset: write the constants and pins
  * (cfg_*), then lay the nodes out (CMD = 1: the init walk, N cycles; or, for a graph,
@@ -113,6 +116,7 @@ module strand_core #(
     wire [AW-1:0] edge_a      = cfg_data[AW-1:0];
     wire [AW-1:0] edge_b      = cfg_data[2*AW-1:AW];
     wire          edge_spring = cfg_data[(2*AW < W ? 2*AW : W-1)];
+    wire          edge_last   = cfg_data[(2*AW+1 < W ? 2*AW+1 : W-1)];  // ARCH: the edge ends its colour
     wire [AW-1:0] cfg_node    = cfg_data[AW-1:0];  // PIN and NODE: a node address
 
     // ---- port A of the units: one reader at a time (the scan, the spring pass, the
@@ -154,7 +158,19 @@ module strand_core #(
     /* verilator lint_off PINCONNECTEMPTY */
     // the spring pass's FEC is not an output (FEC is the constraint pass's)
     generate
-        if (EN_CONSTRAINTS && ARCH) begin : g_stream
+        if (EN_CONSTRAINTS && ARCH && GRAPH) begin : g_graph_stream
+            graph_stream #(
+`include "strand_params_pass.vh"
+            ) u_seq (
+                .clk(clk), .reset(reset), .start(seq_start), .done(seq_done),
+                .e_we(edge_we && !edge_spring), .e_a(edge_a), .e_b(edge_b), .e_rest(edge_rest), .e_last(edge_last),
+                .rd_addr(c_rd), .rd_pos(seq_rd_pos), .rd_pinned(seq_rd_pin),
+                .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}),
+                .wr_en(c_wr_en), .wr_addr(c_wr), .wr_pos(c_wr_pos),
+                .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
+            assign c_rd_down = {IW{1'b0}};
+            wire unused_rest = &{1'b0, rest_len};  // a graph's edges have their own
+        end else if (EN_CONSTRAINTS && ARCH) begin : g_stream
             chain_stream #(
 `include "strand_params_pass.vh"
             ) u_seq (
@@ -204,7 +220,7 @@ module strand_core #(
             wire unused_constraints = &{1'b0, rest_len, seq_start};
         end
 
-        if (EN_SPRINGS && ARCH) begin : g_spring_stream
+        if (EN_SPRINGS && ARCH && !GRAPH) begin : g_spring_stream
             // the pipelined spring pass: every unit gathers its own nodes' forces
             spring_stream #(
 `include "strand_params_pass.vh"
@@ -244,7 +260,7 @@ module strand_core #(
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
     generate
-        if (!(EN_SPRINGS && ARCH)) begin : g_serial_force_writes
+        if (!(EN_SPRINGS && ARCH && !GRAPH)) begin : g_serial_force_writes
             for (u = 0; u < M; u = u + 1) begin : g_unit_f
                 localparam [UW-1:0] U_ID = u;
                 assign acc_we_all[u]            = f_wr_en && f_wr[AW-1:IW] == U_ID;
@@ -252,7 +268,7 @@ module strand_core #(
                 assign acc_w_all[u*DW +: DW]    = f_wr_pos;
             end
         end
-        if (!(EN_CONSTRAINTS && ARCH)) begin : g_serial_writes
+        if (!(EN_CONSTRAINTS && ARCH && !GRAPH)) begin : g_serial_writes
             for (u = 0; u < M; u = u + 1) begin : g_unit_w
                 localparam [UW-1:0] U_ID = u;
                 assign seq_we[u]             = c_wr_en && c_wr[AW-1:IW] == U_ID;
@@ -261,7 +277,7 @@ module strand_core #(
             end
         end
     endgenerate
-    wire unused_graph = &{1'b0, edge_we, edge_a, edge_b, edge_spring, edge_rest};  // a chain has no edge memory
+    wire unused_graph = &{1'b0, edge_we, edge_a, edge_b, edge_spring, edge_rest, edge_last};  // a chain has no edge memory
     wire unused_port_a = &{1'b0, seq_rd_pos, seq_rd_pin};  // a build with no pass that reads port A
 
     // ---- GRAB: the scan for the node to hold ----
@@ -289,7 +305,7 @@ module strand_core #(
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
-            localparam [0:0] STREAM_DOWN = EN_CONSTRAINTS && ARCH && u % 2 == 1;  // chain_stream: reads downward
+            localparam [0:0] STREAM_DOWN = EN_CONSTRAINTS && ARCH && !GRAPH && u % 2 == 1;  // chain_stream: reads downward
             wire here_init = init_we && init_addr[AW-1:IW] == U_ID;
             wire here_load = node_we && cfg_node[AW-1:IW] == U_ID;  // NODE: the address is in cfg_data, as for PIN
             wire here_seq  = seq_we[u];

@@ -56,7 +56,7 @@ PARAMS = [
     ("GRAB",           "0",      "0", "1",    "mouse",       "with EN_MOUSE: the nearest node in the box follows the pointer"),
     ("EN_CONSTRAINTS", "1",      "0", "1",    "constraints", "distance constraints (rods, struts, chain links)"),
     ("RULE",           "0",      "0", "1",    "constraints", "their rule: 0 centred (reference 000), 1 pairwise (references 001, 002)"),
-    ("ARCH",           "0",      "0", "1",    "constraints", "the constraint and spring passes: 0 serial (one toward / spring_force datapath, node by node or link by link, the order of reference 000), 1 pipelined (every unit streams its nodes through its own toward_pipe in red/black order, and its links through its own spring_force_pipe: one constraint or spring a clock)"),
+    ("ARCH",           "0",      "0", "1",    "constraints", "the constraint and spring passes: 0 serial (one toward / spring_force datapath, node by node or link by link, the order of reference 000), 1 pipelined (every unit streams its nodes through its own toward_pipe in red/black order, and its links through its own spring_force_pipe: one constraint or spring a clock; a graph streams its rod memory through one toward_pipe, colour by colour, an edge every two clocks, and keeps the serial spring pass)"),
     ("PROJECTION",     "0",      "0", "1",    "constraints", "the direction of each correction: 0 the current one (references 000-002), 1 the constraint's direction at the substep's start (projection = previous, SHAKE: toward_prev, or toward_prev_pipe in the pipelined pass)"),
     ("EN_SPRINGS",     "0",      "0", "1",    "springs",     "damped springs (references 001, 004): a spring pass before each Verlet pass"),
     ("EN_GROUND",      "0",      "0", "1",    "ground",      "ground collision with friction (reference 001)"),
@@ -66,6 +66,7 @@ PARAMS = [
     ("GRAPH",          "0",      "0", "1",    "graph",       "0: a chain (implied links), 1: a graph (edge memories)"),
     ("E_RODS",         "1",      "1", "65536", "graph",      "GRAPH: entries of the rod (constraint) edge memory"),
     ("E_SPRINGS",      "1",      "1", "65536", "graph",      "GRAPH: entries of the spring edge memory"),
+    ("COLOURS",        "1",      "1", "64",   "graph",       "GRAPH with ARCH = 1: the colours of the rod memory's edges (the pipelined pass drains its pipeline after each; the cycle formula counts them, the hardware reads the colour ends from the EDGE words)"),
     ("DEBUG",          "0",      "0", "1",    "observability", "1: the dbg port carries phase, FV, FEC, the walk and the write-back lanes (simulation); 0: dbg is one constant bit"),
     ("RAM_BLOCK_MIN",  "64",     "1", "1048576", "storage",  "a node or edge memory of at least this many entries asks for block RAM; smaller ones for LUT RAM or flip-flops"),
 ]
@@ -76,12 +77,13 @@ ONLY = {
     "ITER": "EN_CONSTRAINTS",
     "GRAB": "EN_MOUSE",
     "RULE": "EN_CONSTRAINTS",
-    "ARCH": "(EN_CONSTRAINTS || EN_SPRINGS) && !GRAPH",
+    "ARCH": "EN_CONSTRAINTS || (EN_SPRINGS && !GRAPH)",
     "PROJECTION": "EN_CONSTRAINTS",
     "GROUND_AXIS": "EN_GROUND",
     "GROUND_ABOVE": "EN_GROUND",
     "E_RODS": "GRAPH && EN_CONSTRAINTS",
     "E_SPRINGS": "GRAPH && EN_SPRINGS",
+    "COLOURS": "GRAPH && EN_CONSTRAINTS && ARCH",
 }
 
 # Derived widths: parameters of the header too (ports need them) that nobody sets;
@@ -103,9 +105,13 @@ DERIVED = [
 CHECKS = [
     ("graph_needs_the_pairwise_rule", "!GRAPH || !EN_CONSTRAINTS || RULE == 1",
      "a graph's rods and struts use the pairwise rule (RULE = 1)"),
-    ("pipelined_constraints_are_for_chains", "!ARCH || !GRAPH",
-     "the pipelined constraint pass (ARCH = 1) streams a chain; a graph's edges take the serial pass, in colour order"),
+    ("pipelined_graph_needs_constraints", "!ARCH || !GRAPH || EN_CONSTRAINTS",
+     "a graph's pipelined pass (ARCH = 1) streams its rods; a graph of springs alone has the serial spring pass only"),
+    ("colours_within_the_rods", "!GRAPH || !ARCH || COLOURS <= E_RODS",
+     "a graph's rod memory of E_RODS edges has at most E_RODS colours"),
     ("graph_edge_word_wider_than_W", "!GRAPH || 2 * AW + 1 <= W", "a graph's EDGE word {spring, b, a} must fit W bits"),
+    ("graph_colour_bit_wider_than_W", "!GRAPH || !ARCH || 2 * AW + 2 <= W",
+     "a pipelined graph's EDGE word {colour end, spring, b, a} must fit W bits"),
     ("node_address_wider_than_W", "AW <= W", "a node address {unit, node} must fit W bits (PIN, NODE writes)"),
 ]
 

@@ -95,7 +95,7 @@ def random_build(rng, plan=None):
     b["GRAB"] = bool(b["EN_MOUSE"] and b["GRAB"])
     if b["GROUND_AXIS"] >= b["DIM"]:
         b["GROUND_AXIS"] = 1
-    b["ARCH"] = b["ORDER"] and b["EN_CONSTRAINTS"] and not b["GRAPH"]
+    b["ARCH"] = b["ORDER"] and b["EN_CONSTRAINTS"]
     b["PROJECTION"] = bool(b["PROJECTION"] and b["EN_CONSTRAINTS"])
     return b
 
@@ -110,10 +110,11 @@ PLAN = [
     {"name": "chain 3D pairwise pipelined, springs, grab, ground +z", "GRAPH": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "RULE": 1,
      "ORDER": 1, "M": 3, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_SPRINGS": 1, "EN_GROUND": 1, "GROUND_AXIS": 2,
      "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow", "W": 32, "SUBSTEPS": 2},
-    {"name": "graph 3D rods and springs, grab, ground -y", "GRAPH": 1, "DIM": 3, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 1,
+    {"name": "graph 3D rods and springs, grab, ground -y", "GRAPH": 1, "ORDER": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 1,
      "M": 2, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_GROUND": 1, "GROUND_AXIS": 1, "GROUND_ABOVE": 0, "SQRT": "full", "DIV": "full",
      "EN_GRAVITY": 1, "W": 24},
-    {"name": "graph 2D rods, previous projection, impulse, no gravity", "GRAPH": 1, "DIM": 2, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 0,
+    {"name": "graph 2D rods pipelined, previous projection, impulse, no gravity", "GRAPH": 1, "ORDER": 1, "DIM": 2,
+     "EN_CONSTRAINTS": 1, "EN_SPRINGS": 0,
      "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 0, "SQRT": "narrow", "DIV": "narrow", "EN_GRAVITY": 0, "W": 20,
      "PROJECTION": 1},
     {"name": "chain 3D centred pipelined K=1, previous projection, ground +y", "GRAPH": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "RULE": 0,
@@ -132,8 +133,10 @@ CLASSES = [
     ("chain pipelined", "a chain's constraints on the pipelined pass (order redblack, ARCH = 1)"),
     ("chain pipelined K=1", "the pipelined pass with one node per unit"),
     ("previous serial", "projection = previous on the serial pass or a graph's rods"),
-    ("previous pipelined", "projection = previous on a chain's pipelined pass"),
-    ("graph order serial", "a graph's rods in the scene's order"), ("graph order redblack", "a graph's rods by colour"),
+    ("previous pipelined", "projection = previous on a pipelined pass"),
+    ("graph order serial", "a graph's rods in the scene's order (the serial pass, ARCH = 0)"),
+    ("graph order redblack", "a graph's rods by colour on the pipelined pass (graph_stream, ARCH = 1)"),
+    ("graph colours>1", "a pipelined graph whose rods take several colours (drains between them)"),
     ("K=1", "a chain of one node per unit"), ("M=1", "a chain of one unit"), ("M>1", "a chain of several units"),
     ("no constraints", "EN_CONSTRAINTS = 0"), ("chain springs", "EN_SPRINGS on a chain"), ("graph springs", "spring edges"),
     ("graph rods only", "a graph without springs"),
@@ -221,10 +224,6 @@ def scene_text(build, seed, slot):
     n = build["M"] * build["K"]
     if graph:
         n = max(n, 2)
-        if slot in (0, 1):              # a graph's order is the scene's: slot 0 serial, slot 1 redblack
-            facts["order"] = ["serial", "redblack"][slot]
-        else:
-            facts["order"] = rng.choice(["serial", "redblack"])
     reach = span / 4                    # keep the body well inside the range
     vec = lambda v: " ".join(f"{x:.6f}" for x in v[:dim])
     step = [rng.uniform(-1, 1) * reach / max(n, 1) for _ in range(3)]
@@ -250,9 +249,11 @@ def scene_text(build, seed, slot):
     edges = []
     if graph:
         kinds = (["rod", "strut"] if build["EN_CONSTRAINTS"] else []) + (["spring"] if build.get("EN_SPRINGS") else [])
-        # the edge count is the build's (E_RODS, E_SPRINGS are build parameters); the pairs are the scene's
+        # the edge count is the build's (E_RODS, E_SPRINGS are build parameters); the pairs are the
+        # scene's, or in the red/black order the build's (their colours, COLOURS, are a parameter)
         extra = (build["M"] * 7 + build["K"] * 3 + build["W"]) % (n + 1)
-        pairs = [(i, i + 1) for i in range(n - 1)] + [tuple(rng.sample(range(n), 2)) for _ in range(extra)]
+        pick = random.Random(f"pairs-{n}-{build['W']}-{extra}") if build.get("ORDER") else rng
+        pairs = [(i, i + 1) for i in range(n - 1)] + [tuple(pick.sample(range(n), 2)) for _ in range(extra)]
         if kinds:
             for i, (a, b) in enumerate(pairs):
                 edges.append((a, b, kinds[i % len(kinds)]))
@@ -331,7 +332,9 @@ def classes_of(p, facts, resets=0):
     rods = p["EN_CONSTRAINTS"]
     if p["GRAPH"]:
         if rods:
-            c.add(f"graph order {facts['order']}")
+            c.add("graph order redblack" if p["ARCH"] else "graph order serial")
+            if p["ARCH"] and p["COLOURS"] > 1:
+                c.add("graph colours>1")
         c.add("graph springs" if p["EN_SPRINGS"] else "graph rods only" if rods else "no constraints")
     else:
         c.add("K=1" if p["K"] == 1 else "")
@@ -344,7 +347,7 @@ def classes_of(p, facts, resets=0):
         if p["EN_SPRINGS"]:
             c.add("chain springs")
     if rods and p["PROJECTION"]:
-        c.add("previous pipelined" if p["ARCH"] and not p["GRAPH"] else "previous serial")
+        c.add("previous pipelined" if p["ARCH"] else "previous serial")
     if not rods:
         c.add("no constraints")
     if p["EN_GROUND"]:
