@@ -110,10 +110,10 @@ PLAN = [
     {"name": "chain 3D pairwise pipelined, springs, grab, ground +z", "GRAPH": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "RULE": 1,
      "ORDER": 1, "M": 3, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_SPRINGS": 1, "EN_GROUND": 1, "GROUND_AXIS": 2,
      "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow", "W": 32, "SUBSTEPS": 2},
-    {"name": "graph 3D rods and springs, grab, ground -y", "GRAPH": 1, "ORDER": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 1,
+    {"name": "graph 3D rods pipelined and springs, grab, ground -y", "GRAPH": 1, "ORDER": 1, "DIM": 3, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 1,
      "M": 2, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_GROUND": 1, "GROUND_AXIS": 1, "GROUND_ABOVE": 0, "SQRT": "full", "DIV": "full",
      "EN_GRAVITY": 1, "W": 24},
-    {"name": "graph 2D rods pipelined, previous projection, impulse, no gravity", "GRAPH": 1, "ORDER": 1, "DIM": 2,
+    {"name": "graph 2D rods, previous projection, impulse, no gravity", "GRAPH": 1, "ORDER": 0, "DIM": 2,
      "EN_CONSTRAINTS": 1, "EN_SPRINGS": 0,
      "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 0, "SQRT": "narrow", "DIV": "narrow", "EN_GRAVITY": 0, "W": 20,
      "PROJECTION": 1},
@@ -471,9 +471,9 @@ def main():
     if a.faults:
         fs = "tb/scenes/chain_q10_8.scene"
         for kind in faults.FAULTS:
-            order = faults.ORDER.get(kind, "")
-            jobs.append((f"fault {kind}", [fs, "--quiet", "--expect-fault", kind] + (["--order", order] if order else []),
-                         read_build(fs, order or None), kind, order))
+            order, scene = faults.ORDER.get(kind, ""), faults.SCENE.get(kind, fs)
+            jobs.append((f"fault {kind}", [scene, "--quiet", "--expect-fault", kind] + (["--order", order] if order else []),
+                         read_build(scene, order or None), kind, order))
     scene_facts = {}   # label -> (the build's parameters, what the scene holds)
     for s in seeds:
         i = s - a.seed * 100000            # the scene's index: its build, and its rank among that build's scenes

@@ -74,8 +74,23 @@ FAULTS["hazard"] = [
      "            localparam [0:0] S_PAR = 1'b0 & S_PAR_I[0];  // planted fault: local colours"),
 ]
 
+# graph_stream (a graph's pipelined pass): the colour ends ignored (but the memory's last), so
+# a colour's first edge reads its nodes while the previous colour's writes are in flight
+FAULTS["graph_hazard"] = [
+    ("graph_stream.v", r"^    wire          ent_last = \(entry_ok && entry\[2\*AW\+W\]\) \|\| j == E_LAST;\n",
+     "    wire          ent_last = (1'b0 && entry_ok && entry[2*AW+W]) || j == E_LAST;  // planted fault: no drains\n"),
+]
+# graph_stream: the drain after a colour one cycle short, so the next colour's first read
+# comes in the cycle of the previous colour's last write
+FAULTS["graph_boundary"] = [
+    ("graph_stream.v", r"DRAIN_I = LT \+ 2;", "DRAIN_I = LT + 1;  // planted fault: a drain one cycle short"),
+]
+
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
-ORDER = {"boundary": "redblack", "bypass": "redblack", "hazard": "redblack"}
+ORDER = {"boundary": "redblack", "bypass": "redblack", "hazard": "redblack",
+         "graph_hazard": "redblack", "graph_boundary": "redblack"}
+# The scene a fault runs on, where it is not the default chain (tb/scenes/chain_q10_8.scene).
+SCENE = {"graph_hazard": "tb/scenes/graph3d_q12.scene", "graph_boundary": "tb/scenes/graph3d_q12.scene"}
 
 
 def plant(name, out):

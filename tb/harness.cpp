@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|bypass|hazard] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -209,6 +209,7 @@ class Run {
     bool compared_ = false; // outputs are compared from the first edge with reset on
     Result r_;
     int fault_writes_ = 0;
+    bool graph_drained_ = false;  // graph_boundary: the model was in its last drain cycle
     bool last_edge_verlet_ = false;
     bool rtl_on_ = true, model_on_ = true;
     render_view view_{};
@@ -308,6 +309,16 @@ bool Run::cycle(const cyc_inputs &in) {
     if (o_.expect == "hazard" && r_.predicted_fault < 0 && model_.st_running && model_.st_iter == 0 &&
         model_.st_t + (model_.st_colour ? model_.st_period : 0) == 5 + model_.lp)
         r_.predicted_fault = cyc_;
+    // graph_hazard: graph_stream goes on to the next colour where it should drain, so the RTL
+    // shows the next edge's a one cycle into the model's drain
+    if (o_.expect == "graph_hazard" && r_.predicted_fault < 0 && model_.gs_state == GS_DRAIN && model_.gs_drain == model_.lp + 1)
+        r_.predicted_fault = cyc_;
+    // graph_boundary: the drain ends a cycle early, so the RTL reads the next edge's a in the
+    // model's last drain cycle and shows it the cycle after
+    if (o_.expect == "graph_boundary" && r_.predicted_fault < 0) {
+        if (graph_drained_) r_.predicted_fault = cyc_;
+        graph_drained_ = model_.gs_state == GS_DRAIN && model_.gs_drain == 0;
+    }
     if (o_.expect == "bypass" && r_.predicted_fault < 0 && model_.st_running && !in.reset)
         for (int prev = 0; prev < 2; prev++) {
             int pos = model_.st_t + (prev ? model_.st_period : 0) - 4 - model_.lp;  // the stream position written
@@ -483,7 +494,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|bypass|hazard] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -527,8 +538,8 @@ int main(int argc, char **argv) {
     }
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
-        o.expect != "hazard")
-        return usage("--expect-fault takes flip, delay, boundary, bypass or hazard");
+        o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary")
+        return usage("--expect-fault takes flip, delay, boundary, bypass, hazard, graph_hazard or graph_boundary");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
     if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 

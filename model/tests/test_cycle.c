@@ -22,8 +22,9 @@ static void edge(cyc_model *c, const cyc_inputs *in, cyc_outputs *out)
     cyc_get_outputs(c, out);
 }
 
-/* Run `frames` frames of a scene on the cycle model, checking every frame end. */
-static void check_scene(const char *path, int frames)
+/* Run `frames` frames of a scene on the cycle model, checking every frame end; order >= 0
+   replaces the scene's constraint order (as `--order` does). */
+static void check_scene_in(const char *path, int frames, int order)
 {
     scene sc;
     char err[SCENE_ERR_LEN];
@@ -36,6 +37,7 @@ static void check_scene(const char *path, int frames)
     int nw;
 
     if (!scene_load(&sc, path, err)) fail_msg("%s", err);
+    if (order >= 0 && scene_set_order(&sc, (constraint_order)order, err) < 0) fail_msg("%s", err);
     assert_null(hw_check(&sc, err, sizeof err));
     hw_params_of(&sc, &hp);
     assert_true(cyc_init(&c, &hp));
@@ -87,6 +89,8 @@ static void check_scene(const char *path, int frames)
     scene_free(&sc);
 }
 
+static void check_scene(const char *path, int frames) { check_scene_in(path, frames, -1); }
+
 static void test_ref000_rope(void **state)
 {
     (void)state;
@@ -131,6 +135,14 @@ static void test_graph_scenes(void **state)
     check_scene(STRAND_ROOT "/sim/scenes/ref001_video2.scene", 200); /* the ground is reached */
 }
 
+/* A graph's pipelined pass (graph_stream): its rods by colour, the pipe drained between colours. */
+static void test_graph_stream(void **state)
+{
+    (void)state;
+    check_scene_in(STRAND_ROOT "/tb/scenes/graph3d_q12.scene", 60, ORDER_REDBLACK); /* three colours, a pinned end */
+    check_scene_in(STRAND_ROOT "/sim/scenes/ref001_video2.scene", 200, ORDER_REDBLACK);
+}
+
 /* The grab form of the mouse: the scan at the frame start, the held node on the pointer. */
 static void test_grab_scenes(void **state)
 {
@@ -143,6 +155,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_graph_scenes),
+        cmocka_unit_test(test_graph_stream),
         cmocka_unit_test(test_grab_scenes),
         cmocka_unit_test(test_spring_scenes),
         cmocka_unit_test(test_pairwise_scenes),
