@@ -1,6 +1,6 @@
 /*
- * cpu_rope.c - the CPU side of the speed comparison: a chain scene's frames in plain C,
- * float or double, on one core, timed.
+ * cpu_rope.c - the CPU side of the speed comparison: a chain's or a graph's frames in plain
+ * C, float or double, on one core, timed.
  *
  * usage: cpu_rope SCENE [--frames N] [--type float|double] [--order serial|redblack]
  *                 [--min-seconds S] [--check]
@@ -8,10 +8,11 @@
  * The algorithm is the frame engine's (model/engine_body.h), written out as tight loops
  * over flat arrays in one number type: per substep the Verlet step (damping, gravity)
  * and the mouse impulse of every node, then `iterations` constraint passes (the centred
- * rule node by node, or the pairwise rule link by link, in the scene's order or --order),
+ * rule node by node, or the pairwise rule link by link or edge by edge, in the scene's order
+ * or --order),
  * with the same operations in the same order, so in double it computes the frame
  * engine's double results bit for bit (--check runs both side by side and compares every
- * position of every frame). Chains only, with the effects the benchmark scenes use:
+ * position of every frame). Chains and graphs, with the effects the benchmark scenes use:
  * gravity, damping, the mouse impulse, constraints, 2D or 3D; anything else is refused.
  *
  * Timing: the scene's frames are run again and again from its start until at least
@@ -38,13 +39,14 @@ typedef struct {
     const scene *sc;
     const sim_dbl *ref; /* the frame engine's constants (init has scaled them to the step) */
     int n, dim, links;
-    int *link_a;        /* the constraint links in pass order */
+    int *link_a, *link_b, *link_e; /* the constraint links (a chain's, a graph's rods) in pass order: ends, edge */
 } rope_shape;
 
 /* One implementation per number type: T is float or double. */
 #define ROPE_IMPL(T, NAME)                                                                                          \
     typedef struct {                                                                                                \
         T (*pos)[3], (*prev)[3];                                                                                    \
+        T *rest; /* per link */                                                                                     \
         T gravity[3], box[3], mouse[3], damping, impulse, dist;                                                     \
         bool mouse_down;                                                                                            \
     } NAME##_state;                                                                                                 \
@@ -63,6 +65,7 @@ typedef struct {
         r->damping = (T)sh->ref->damping;                                                                           \
         r->impulse = (T)sh->ref->impulse;                                                                           \
         r->dist = (T)sh->ref->dist;                                                                                 \
+        for (int l = 0; l < sh->links; l++) r->rest[l] = (T)sh->ref->rest[sh->link_e[l]];                           \
     }                                                                                                               \
                                                                                                                     \
     /* the point at dist from node `from` toward node c; 0 for a zero length */                                    \
@@ -90,15 +93,15 @@ typedef struct {
         }                                                                                                           \
     }                                                                                                               \
                                                                                                                     \
-    static void NAME##_pair(NAME##_state *r, const rope_shape *sh, int a)                                           \
+    static void NAME##_pair(NAME##_state *r, const rope_shape *sh, int l)                                           \
     {                                                                                                               \
-        int b = a + 1, fa = sh->sc->pinned[a], fb = sh->sc->pinned[b];                                              \
+        int a = sh->link_a[l], b = sh->link_b[l], fa = sh->sc->pinned[a], fb = sh->sc->pinned[b];                   \
         T d[3] = {0, 0, 0};                                                                                         \
         if (fa && fb) return;                                                                                       \
         for (int k = 0; k < sh->dim; k++) d[k] = r->pos[b][k] - r->pos[a][k];                                       \
         T len = (T)sqrt(d[0] * d[0] + d[1] * d[1] + d[2] * d[2]);                                                   \
         if (len == 0) return;                                                                                       \
-        T ratio = r->dist / len;                                                                                    \
+        T ratio = r->rest[l] / len;                                                                                 \
         for (int k = 0; k < sh->dim; k++) {                                                                         \
             T excess = d[k] - d[k] * ratio;                                                                         \
             if (!fa && !fb) {                                                                                       \
@@ -152,7 +155,7 @@ typedef struct {
                 } else if (sc->rule == RULE_CENTRED) {                                                              \
                     for (int i = 0; i < n; i++) NAME##_centred(r, sh, i);                                           \
                 } else {                                                                                            \
-                    for (int l = 0; l < sh->links; l++) NAME##_pair(r, sh, sh->link_a[l]);                          \
+                    for (int l = 0; l < sh->links; l++) NAME##_pair(r, sh, l);                                      \
                 }                                                                                                   \
             }                                                                                                       \
         }                                                                                                           \
@@ -210,12 +213,12 @@ int main(int argc, char **argv)
         fprintf(stderr, "%s:1: --order: %s\n", path, err);
         return 2;
     }
-    const char *why = sc.body != BODY_CHAIN ? "graph bodies" : sc.integrator != INTEGRATOR_VERLET ? "explicit Euler"
+    const char *why = sc.integrator != INTEGRATOR_VERLET ? "explicit Euler"
                       : sc.en_springs ? "springs" : sc.en_ground ? "the ground" : sc.en_mouse && sc.mouse == MOUSE_GRAB ? "the grab form of the mouse"
                       : sc.projection == PROJECTION_PREVIOUS ? "projection = previous"
                       : NULL;
     if (why) {
-        fprintf(stderr, "%s:1: cpu_rope runs chains with gravity, damping, the mouse impulse and constraints; not %s\n", path, why);
+        fprintf(stderr, "%s:1: cpu_rope runs chains and graphs with gravity, damping, the mouse impulse and constraints; not %s\n", path, why);
         return 2;
     }
     if (frames < 0) frames = sc.frames;
@@ -225,17 +228,29 @@ int main(int argc, char **argv)
         fprintf(stderr, "cpu_rope: out of memory\n");
         return 1;
     }
-    rope_shape sh = {&sc, &ref, sc.n_nodes, sc.dim, 0, NULL};
+    rope_shape sh = {&sc, &ref, sc.n_nodes, sc.dim, 0, NULL, NULL, NULL};
     sh.link_a = calloc((size_t)(sc.n_edges + 1), sizeof *sh.link_a);
+    sh.link_b = calloc((size_t)(sc.n_edges + 1), sizeof *sh.link_b);
+    sh.link_e = calloc((size_t)(sc.n_edges + 1), sizeof *sh.link_e);
+    if (!sh.link_a || !sh.link_b || !sh.link_e) {
+        fprintf(stderr, "cpu_rope: out of memory\n");
+        return 1;
+    }
     for (int e = 0; e < sc.n_edges; e++)
-        if (sc.edges[e].kind != EDGE_SPRING) sh.link_a[sh.links++] = sc.edges[e].a; /* a chain's link (a, a + 1) */
+        if (sc.edges[e].kind != EDGE_SPRING) { /* in the order of the scene's edges: the frame engine's */
+            sh.link_a[sh.links] = sc.edges[e].a;
+            sh.link_b[sh.links] = sc.edges[e].b;
+            sh.link_e[sh.links++] = e;
+        }
     flt_state fr;
     dbl_state dr;
+    fr.rest = calloc((size_t)(sh.links + 1), sizeof *fr.rest);
+    dr.rest = calloc((size_t)(sh.links + 1), sizeof *dr.rest);
     fr.pos = calloc((size_t)sh.n, sizeof *fr.pos);
     fr.prev = calloc((size_t)sh.n, sizeof *fr.prev);
     dr.pos = calloc((size_t)sh.n, sizeof *dr.pos);
     dr.prev = calloc((size_t)sh.n, sizeof *dr.prev);
-    if (!sh.link_a || !fr.pos || !fr.prev || !dr.pos || !dr.prev) {
+    if (!fr.rest || !dr.rest || !fr.pos || !fr.prev || !dr.pos || !dr.prev) {
         fprintf(stderr, "cpu_rope: out of memory\n");
         return 1;
     }

@@ -85,8 +85,9 @@ module graph_stream #(
     localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
     localparam [DRW-1:0] DRAIN     = DRAIN_I[DRW-1:0];
 
-    `STRAND_CHECK(graph_stream_build, GRAPH && RULE == 1 && M == 1 && (1 << CW) > E,
-                  ("graph_stream: a graph (GRAPH=%0d), the pairwise rule (RULE=%0d), one unit (M=%0d), CW=%0d counting E=%0d in %m",
+    // (strand_core instantiates it for a graph only; the table's defaults, a chain, pass too)
+    `STRAND_CHECK(graph_stream_build, !GRAPH || (RULE == 1 && M == 1 && (1 << CW) > E),
+                  ("graph_stream: a graph (GRAPH=%0d) needs the pairwise rule (RULE=%0d), one unit (M=%0d), CW=%0d counting E=%0d in %m",
                    GRAPH, RULE, M, CW, E))
 
     localparam [1:0] S_IDLE  = 2'd0, // waiting for start

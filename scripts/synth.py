@@ -73,6 +73,9 @@ BUILDS = [
     ("8x8_pipe", {"M": 8, "K": 8, "ARCH": 1}, "ecp5p"),
     ("16x16_pipe", {"M": 16, "K": 16, "ARCH": 1}, "ecp5p"),
     ("8x128_pipe", {"M": 8, "K": 128, "ARCH": 1}, "ecp5p"),
+    # a graph's pipelined pass (graph_stream, one toward_pipe): the cloth of tb/bench/graph_cloth.scene
+    # (16 x 16 nodes, 480 rods in 4 colours), the graph of the speed comparison
+    ("cloth_pipe", {"M": 1, "K": 256, "GRAPH": 1, "RULE": 1, "ARCH": 1, "E_RODS": 480, "COLOURS": 4}, "ecp5p"),
 ]
 BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
 MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
@@ -83,7 +86,7 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # nextpnr; the 8x8 (the 8x128's units, fewer nodes) and the 16x16 (256 MULT18X18D) get
 # generic cells only, and the report gives the multipliers they would need from the 4x5's
 # per unit.
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": []}
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [], "cloth_pipe": [1]}
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
 # but not placed: the 8x128 fills most of the device, and placing it with the WebAssembly
 # nextpnr-ecp5 did not get past the analytical placer's first iteration in 12 minutes here
@@ -414,7 +417,9 @@ def report(bdir, gen, out, srcs):
             if pnr[b].get("ecp5") else NOT_RUN
 
     w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
-      "evaluation a clock each; docs/architecture.md). Generic cells as above (hierarchical); "
+      "evaluation a clock each; docs/architecture.md), and a graph's (cloth_pipe: the 256-node cloth of "
+      "tb/bench/graph_cloth.scene, its 480 rods streamed through one toward_pipe by graph_stream). Generic cells as "
+      "above (hierarchical); "
       + (", ".join(f"{b} (place and route: {pnr_minutes(b)})" for b in placed_pipe)
          + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. " if placed_pipe else "")
       + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing only (`--pack-only`), which says whether the design "
