@@ -214,7 +214,8 @@ LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_ro
                    sim/scenes/hard_mouse_impulse.scene:40 sim/scenes/ref004_chain.scene:60 sim/scenes/hard_stiff_k10000.scene:40 \
                    sim/scenes/ref002_verlet_springs.scene:2 sim/scenes/hard_ground_impact.scene:300 \
                    sim/scenes/ref001_video1.scene:100 sim/scenes/ref001_video2.scene:300 sim/scenes/ref001_video3.scene:300 \
-                   sim/scenes/ref001_video4.scene:300 sim/scenes/spring_pair.scene:240 sim/scenes/hard_mouse_grab.scene:300
+                   sim/scenes/ref001_video4.scene:300 sim/scenes/spring_pair.scene:240 sim/scenes/hard_mouse_grab.scene:300 \
+                   tb/bench/graph_cloth.scene:30
 # Every hard case the RTL supports (issue F), in lockstep: make lockstep-hard (longer; not in make test).
 HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 hard_many_iterations:10 \
             hard_stiff_k1000:200 hard_stiff_k10000:200 hard_ground_impact hard_mouse_grab:2000 \
@@ -276,8 +277,8 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 
 test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
-	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit
-	@for s in $(wildcard tb/bench/bench_*.scene) sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
+	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit (chains and a graph)
+	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
 
 # Every shipped scene runs in both formats.

@@ -39,6 +39,7 @@ RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene wit
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
 SPRING_BUILDS = ["4x5", "8x128"]  # tb/bench/springs_<build>.scene: chains of springs
+GRAPH_SCENE, GRAPH_BUILD = "tb/bench/graph_cloth.scene", "cloth"  # a graph: make synth's cloth_pipe
 ROPE = "8x128"            # the 1024-node rope
 ITER_STEPS = [1, 4, 16, 64, 256, 1024]  # its iteration counts in the rope table
 CPU_SECONDS = "1.5"
@@ -146,6 +147,29 @@ def physics():
         notes.append("No pipelined build has an fmax yet (run `make synth`): the updates per second and the "
                      "ratio to the CPU need it.")
     return lines + notes + rope(rows)
+
+
+def graph():
+    """The cloth (a graph of rods) in both architectures against the CPU (as markdown lines)."""
+    lines = ["| architecture | nodes | rods | colours | cycles per frame (RTL) | updates per clock in the constraint "
+             "passes | fmax ECP5-85F, MHz | updates/s at fmax, M | CPU double, M/s | CPU float, M/s | "
+             "core / CPU double |", "|---|---|---|---|---|---|---|---|---|---|---|"]
+    mega = lambda v: f"{v / 1e6:.2f}" if v is not None else "-"
+    for arch, order, suffix in ARCHS:
+        info = flow_hwgen.info(GRAPH_SCENE, order)["params"]
+        f = rtl_figures(GRAPH_SCENE, PHYS_FRAMES, order)
+        # make synth places the pipelined cloth only
+        mhz, mhz_text = fmax_of(GRAPH_BUILD + suffix) if suffix else (None, "not placed")
+        cpu_d, _ = cpu_rate(GRAPH_SCENE, order, "double")
+        cpu_f, _ = cpu_rate(GRAPH_SCENE, order, "float")
+        hw = f["updates_per_clock"] * mhz * 1e6 if mhz else None
+        colours = info["COLOURS"] if info["ARCH"] else "-"
+        lines.append(f"| {arch} | {info['K']} | {info['E_RODS']} | {colours} | {f['cycles_per_frame']} | "
+                     f"{f['updates_per_clock_passes']:.4f} | {mhz_text} | {mega(hw)} | {mega(cpu_d)} | {mega(cpu_f)} | "
+                     f"{f'**{hw / cpu_d:.2f}x**' if hw else '-'} |")
+        print(f"bench graph {arch}: {f['cycles_per_frame']} cycles/frame, {f['updates_per_clock_passes']:.4f} "
+              f"updates/clock in the passes, fmax {mhz_text}, CPU {cpu_d / 1e6:.1f} M/s double", flush=True)
+    return lines
 
 
 def rope(rows):
@@ -301,6 +325,16 @@ def main():
              "gathers its nodes' forces in link order, so its ceiling is M springs a clock less one fill and drain "
              "of the pipe a pass). Cycles counted by the harness on the RTL.", "",
              *springs(), "",
+             "## A graph: the cloth", "",
+             f"`{GRAPH_SCENE}`: 16 x 16 nodes joined by 480 rods (the grid's edges), the top row pinned, Q16.16 at "
+             "full precision, the pairwise rule, gravity and the mouse, one iteration. *Serial* walks the rods one "
+             "at a time through one toward (pair_sequencer); *pipelined* is graph_stream (ARCH = 1): the rods by the "
+             "colours of an edge colouring, one toward_pipe, a new rod every two clocks (a rod reads two nodes and "
+             "writes two through the unit's one read and one write port), the pipe drained after each colour, so its "
+             "ceiling is 0.5 rod updates a clock. Updates are rod updates, counted by the harness on the RTL; "
+             "updates/s = updates per clock over whole frames x fmax; the CPU (cpu_rope, as above) runs the same "
+             "scene in the same order.", "",
+             *graph(), "",
              "## Simulation speed", "",
              "Simulated clock cycles per second of the Verilator harness (`tb/harness.cpp`), the median of "
              f"{REPEATS} runs (the three modes take turns within each repeat), by its own counter (wall-clock time of the run loop). Each run resets the core, writes "
