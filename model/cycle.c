@@ -283,6 +283,27 @@ static void edge_write(cyc_model *c, uint32_t data)
 }
 
 /*
+ * The pairwise rule's writes of edge e (pair_sequencer S_WR_A, graph_stream's result): pair_edge()
+ * now, a written (unless fixed); b's new position goes to b_new, to be written the cycle after.
+ * Returns whether b is to be written then.
+ */
+static bool pair_write_a(cyc_model *c, int e, bool *written, fx_t b_new[3])
+{
+    const int k = c->hp.k, a = c->sc.edges[e].a, b = c->sc.edges[e].b;
+    bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
+    if (fa && fb) return false;
+    long skipped = c->s.skipped;
+    fx_t b_old[3];
+    memcpy(b_old, c->s.pos[b], sizeof b_old);
+    sim_fx_pair_edge(&c->s, e);
+    bool valid = c->s.skipped == skipped;
+    memcpy(b_new, c->s.pos[b], 3 * sizeof *b_new);
+    memcpy(c->s.pos[b], b_old, sizeof b_old);
+    if (valid && !fa) lane_write(c, written, a / k, a % k, a);
+    return valid && !fb;
+}
+
+/*
  * pair_sequencer (one instance): the writes of a link's ends, then the control.
  * spring: the spring pass (spring_edge() on the link's spring edge; the forces are
  * not positions, so nothing shows on the write-back lanes); else the pairwise
@@ -298,25 +319,13 @@ static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring
     /* this link: edge `counter` of the memory (the chain's links are edges (i, i+1) of sc) */
     const int base = spring ? c->spring0 : 0;
     const int e = base + (q->counter < links ? q->counter : 0);
-    const int a = links > 0 ? c->sc.edges[e].a : 0, b = links > 0 ? c->sc.edges[e].b : 0;
+    const int b = links > 0 ? c->sc.edges[e].b : 0;
     const int first_a = hp->graph && links > 0 ? c->sc.edges[base].a : 0;
     const int next_a = links > 0 ? c->sc.edges[base + (q->counter + 1 < links ? q->counter + 1 : 0)].a : 0;
     if (q->state == PQ_WR_A && spring) {
         sim_fx_spring_edge(&c->s, e); /* a's force now, b's next cycle: nothing reads between */
     } else if (q->state == PQ_WR_A) { /* pair_edge() now; b's half is written next cycle */
-        bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
-        q->write_b = false;
-        if (!(fa && fb)) {
-            long skipped = c->s.skipped;
-            fx_t b_old[3];
-            memcpy(b_old, c->s.pos[b], sizeof b_old);
-            sim_fx_pair_edge(&c->s, e);
-            bool valid = c->s.skipped == skipped;
-            memcpy(q->b_new, c->s.pos[b], sizeof q->b_new);
-            memcpy(c->s.pos[b], b_old, sizeof b_old);
-            if (valid && !fa) lane_write(c, written, a / k, a % k, a);
-            q->write_b = valid && !fb;
-        }
+        q->write_b = pair_write_a(c, e, written, q->b_new);
     } else if (q->state == PQ_WR_B && q->write_b) {
         memcpy(c->s.pos[b], q->b_new, sizeof q->b_new);
         lane_write(c, written, b / k, b % k, b);
@@ -464,21 +473,8 @@ static void graph_stream_edge(cyc_model *c, bool start, bool *written)
     const int k = hp->k, edges = hp->e_rods;
     const int out = c->gs_ring[c->gs_ring_pos];
     if (out >= 0) { /* pair_edge() now; b's half is written next cycle */
-        const int a = c->sc.edges[out].a, b = c->sc.edges[out].b;
-        bool fa = sim_fx_node_fixed(&c->s, a), fb = sim_fx_node_fixed(&c->s, b);
-        c->gs_write_b = false;
-        if (!(fa && fb)) {
-            long skipped = c->s.skipped;
-            fx_t b_old[3];
-            memcpy(b_old, c->s.pos[b], sizeof b_old);
-            sim_fx_pair_edge(&c->s, out);
-            bool valid = c->s.skipped == skipped;
-            memcpy(c->gs_b_new, c->s.pos[b], sizeof c->gs_b_new);
-            memcpy(c->s.pos[b], b_old, sizeof b_old);
-            if (valid && !fa) lane_write(c, written, a / k, a % k, a);
-            c->gs_write_b = valid && !fb;
-            c->gs_b_node = b;
-        }
+        c->gs_write_b = pair_write_a(c, out, written, c->gs_b_new);
+        c->gs_b_node = c->sc.edges[out].b;
     } else if (c->gs_write_b) {
         const int b = c->gs_b_node;
         memcpy(c->s.pos[b], c->gs_b_new, sizeof c->gs_b_new);
