@@ -19,9 +19,13 @@
  *          rounding stage): one more than fx_sqrt's start-to-done.
  * Throughput: one root per clock. No reset: a stage holds whatever entered it; the
  *          caller keeps its own valid bits.
- * Cost: SQRT_BITS + 1 subtracters of SQRT_BITS + 3 bits and, per stage, the partial
- *       remainder, the root bits so far and the radicand bits still to come (the ones
- *       that are constant are removed by synthesis).
+ * Cost: SQRT_BITS + 1 subtracters and, per stage, the partial remainder, the root bits
+ *       so far and the radicand bits still to come (the ones that are constant are
+ *       removed by synthesis). After s iterations the root q has s bits and the
+ *       partial remainder is at most 2q (the radicand's top 2s bits minus q^2), so it
+ *       is kept in s + 1 bits: iteration s subtracts s + 2 bits, not SQRT_BITS + 3
+ *       (at W = 32 about half the carry cells of full-width stages; the results are
+ *       the same, the upper bits being zero).
  */
 module fx_sqrt_pipe #(
     parameter integer W         = 32,   // total width in bits, 8..32
@@ -73,17 +77,23 @@ module fx_sqrt_pipe #(
             wire [NIT-1:0] q_next = {q_s[s-1][NIT-2:0], step[AW]};
             if (s < NIT) begin : g_iter
                 reg [XW-1:0]  x_q;
-                reg [AW-1:0]  ac_q;
+                // the partial remainder after s iterations: <= 2q < 2^(s+1), s + 1 bits
+                localparam integer AWS = (s + 1 < AW) ? s + 1 : AW;
+                reg [AWS-1:0] ac_q;
                 reg [NIT-1:0] q_q;
                 reg           big_q;
                 always @(posedge clk) begin
                     x_q   <= x_s[s-1] << 2;
-                    ac_q  <= step[AW-1:0];
+                    ac_q  <= step[AWS-1:0];
                     q_q   <= q_next;
                     big_q <= big_s[s-1];
                 end
                 assign x_s[s]   = x_q;
-                assign ac_s[s]  = ac_q;
+                if (AWS < AW) begin : g_zx
+                    assign ac_s[s] = {{(AW-AWS){1'b0}}, ac_q};
+                end else begin : g_full
+                    assign ac_s[s] = ac_q;
+                end
                 assign q_s[s]   = q_q;
                 assign big_s[s] = big_q;
             end else begin : g_last

@@ -178,7 +178,7 @@ module node_unit #(
     // read while node vidx is written) ----
     wire [IW-1:0] a_addr = pass_start ? {IW{1'b0}} : running_q ? vidx_q + 1'b1 : a_idx;
     wire          a_re   = {1'b0, a_addr} < K_COUNT;
-    reg  [K-1:0]  pinned_q;
+    wire [K-1:0]  pinned_q;       // the flags (below)
     reg           q_pin, q_grab;
     always @(posedge clk)
         if (a_re) begin
@@ -226,23 +226,33 @@ module node_unit #(
         end
     endgenerate
 
-    always @(posedge clk) begin
-        if (reset) pinned_q <= {K{1'b0}};
-        else if (pin_en && {1'b0, pin_idx} < K_COUNT) pinned_q[pin_idx] <= 1'b1;
-    end
+    // ---- the pinned and written flags, one decoder per node: a write at a variable bit
+    // index (flags[idx] <= 1) synthesises to a mask shifted by the index, a carry chain
+    // on the path from the write index that sets the clock ----
+    wire [K-1:0] written_q;
+    genvar n;
+    generate
+        for (n = 0; n < K; n = n + 1) begin : g_flag
+            localparam [IW-1:0] N_ID = n;
+            reg pinned_n, written_n;
+            always @(posedge clk)
+                if (reset) begin
+                    pinned_n  <= 1'b0;
+                    written_n <= 1'b0;
+                end else begin
+                    if (pin_en && pin_idx == N_ID) pinned_n  <= 1'b1;
+                    if (we && widx == N_ID)        written_n <= 1'b1;
+                end
+            assign pinned_q[n]  = pinned_n;
+            assign written_q[n] = written_n;
+        end
+    endgenerate
 
     // ---- port B: a node not written since reset reads as 0 ----
-    reg  [K-1:0]     written_q;
     reg              b_ok;
-    always @(posedge clk) begin
-        if (reset) begin
-            written_q <= {K{1'b0}};
-            b_ok      <= 1'b0;
-        end else begin
-            if (we) written_q[widx] <= 1'b1;
-            b_ok <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
-        end
-    end
+    always @(posedge clk)
+        if (reset) b_ok <= 1'b0;
+        else b_ok <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
     assign b_pos = b_ok ? b_pos_raw : {(DIM*W){1'b0}};
 
     // ---- the write-back lane (DEBUG) ----
