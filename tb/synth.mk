@@ -42,10 +42,13 @@ $(SYNTH_GEN)/strand_params.vh: scripts/gen_params.py
 	python3 scripts/gen_params.py $(SYNTH_GEN)
 endif
 
-# The script decides per step whether its cached result is still good.
+# The script decides per step whether its cached result is still good. SYNTH_ONLY=BUILD[,BUILD]
+# runs only those builds' steps (scripts/synth.py's BUILDS names them) and writes the page from
+# what the record holds for the rest.
 synth: $(SYNTH_GEN)/strand_regs.vh $(SYNTH_GEN)/strand_params.vh
 	@scripts/bootstrap.sh
-	@$(SYNTH_PY) all --build $(SYNTH_DIR) --gen $(SYNTH_GEN) --jobs $(SYNTH_JOBS) --out $(SYNTH_DOC) $(SYNTH_SRC)
+	@$(SYNTH_PY) all --build $(SYNTH_DIR) --gen $(SYNTH_GEN) --jobs $(SYNTH_JOBS) $(if $(SYNTH_ONLY),--only $(SYNTH_ONLY)) \
+	  --out $(SYNTH_DOC) $(SYNTH_SRC)
 
 test-synth-check: $(SYNTH_GEN)/strand_regs.vh $(SYNTH_GEN)/strand_params.vh
 	@$(SYNTH_PY) check --build $(SYNTH_DIR) --gen $(SYNTH_GEN) $(SYNTH_SRC)
