@@ -401,13 +401,14 @@ def fewest_scenes(builds, seed):
     return None, [name for name, _ in CLASSES if name in want - got]
 
 
-def build_harness(scene, build, rtl="rtl", order=None, fault=""):
+def build_harness(scene, build, rtl="rtl", order=None, fault="", deep=False):
     """The harness of a scene's build (shared by every scene of that build): (path, None),
-    or (None, why) when it did not build."""
+    or (None, why) when it did not build. deep: the build that traces every signal."""
     try:
-        return flow_build.harness_for(scene, harness_dir(build, fault), rtl, order), None
+        return flow_build.harness_for(scene, harness_dir(build, fault, deep), rtl, order,
+                                      trace="deep" if deep else "top"), None
     except Failure as e:
-        log = os.path.join(ROOT, harness_dir(build, fault), "build.log")
+        log = os.path.join(ROOT, harness_dir(build, fault, deep), "build.log")
         return None, (open(log).read() if "verilator" in str(e) and os.path.exists(log) else "") + str(e)
 
 
@@ -426,6 +427,8 @@ def main():
                     help="also run every --scene in the red/black order (a chain's pipelined build)")
     ap.add_argument("--harness-for", metavar="SCENE", help="build (if needed) the harness for SCENE's build, print its path")
     ap.add_argument("--order", choices=["serial", "redblack"], help="with --harness-for: the build of SCENE in this order")
+    ap.add_argument("--deep-trace", action="store_true",
+                    help="with --harness-for: the build that traces every signal of the core (make wave's)")
     ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
     ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
     ap.add_argument("--scenes-only", action="store_true",
@@ -433,7 +436,7 @@ def main():
     a = ap.parse_args()
 
     if a.harness_for:
-        exe, why = build_harness(a.harness_for, read_build(a.harness_for, a.order), order=a.order)
+        exe, why = build_harness(a.harness_for, read_build(a.harness_for, a.order), order=a.order, deep=a.deep_trace)
         if exe is None:
             sys.stderr.write(why + "\n")
             return 1

@@ -25,7 +25,9 @@ out=$build/sim/$name
 "$build/strand" check "$scene" ${order:+--order "$order"} >/dev/null   # a bad scene stops here, with file:line
 mkdir -p "$out"
 echo "building strand_core for $scene (Verilator; cached once built)..."
-harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene" ${order:+--order "$order"})
+# with --waves the build that traces every signal of the core (a build of its own), else the
+# one make test runs, whose traces hold the core's ports and its observation port
+harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene" ${order:+--order "$order"} ${waves:+--deep-trace})
 # the harness runs in $out, so that a lockstep mismatch leaves its trace (mismatch.fst) there
 harness=$(realpath "$harness")
 scene_abs=$(realpath "$scene")

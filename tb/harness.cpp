@@ -603,8 +603,14 @@ int main(int argc, char **argv) {
             scene_free(&sc);
             return right ? 0 : 1;
         }
-        std::printf("FAIL lockstep %s seed %" PRIu64 ": mismatch at cycle %ld; trace in %s\n", sc.name, o.seed, r.mismatch_cycle,
-                    fst.c_str());
+#ifdef STRAND_TRACE_TOP
+        // this build traces the core's ports and observation port (every signal compared)
+        const char *depth = " (the core's ports and observation port; make sim WAVES=1 traces every signal)";
+#else
+        const char *depth = "";
+#endif
+        std::printf("FAIL lockstep %s seed %" PRIu64 ": mismatch at cycle %ld; trace in %s%s\n", sc.name, o.seed,
+                    r.mismatch_cycle, fst.c_str(), depth);
         scene_free(&sc);
         return 1;
     }

@@ -16,7 +16,7 @@ bad=0
 for spec in ref000_rope: ref001_video2: pendulum:redblack; do
   name=${spec%%:*} order=${spec#*:}
   scene=sim/scenes/$name.scene
-  harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene" ${order:+--order "$order"}) || { echo "FAIL waves $name: no harness"; bad=$((bad + 1)); continue; }
+  harness=$(python3 scripts/lockstep_fuzz.py --harness-for "$scene" ${order:+--order "$order"} --deep-trace) || { echo "FAIL waves $name: no harness"; bad=$((bad + 1)); continue; }
   fst=$out/$name.fst
   if ! "$harness" "$scene" --frames 2 --quiet --trace "$fst" ${order:+--order "$order"} > "$out/$name.log" 2>&1; then
     echo "FAIL waves $name: the traced run failed ($out/$name.log)"; bad=$((bad + 1)); continue

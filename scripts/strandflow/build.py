@@ -8,7 +8,15 @@ a copy with a planted fault (tb/faults.py) is built the same way. ORDER (serial 
 redblack) replaces the scene's constraint order (redblack: a chain's pipelined build).
 Environment: HARNESS_OPT=fast compiles the C++ without optimisation (a build that runs
 only a few frames, such as make mutate's: about half the compile time); DEMO=1 builds
-OUTDIR/demo instead (tb/demo.cpp, the harness's run in an SDL2 window: make demo).
+OUTDIR/demo instead (tb/demo.cpp, the harness's run in an SDL2 window: make demo);
+TRACE=deep traces every signal of the core (make wave's build).
+
+Tracing: a harness traces (--trace, and the replay of a lockstep mismatch) the signals of
+sim_top only, which are the core's ports and its observation port, every signal lockstep
+compares (Verilator --trace-depth 1): the code that traces every signal inside the core is
+a third of the generated C++ and some 40 % of a build's compile time, which most of make
+test is. A deep build (trace="deep", its own directory: harness_dir(..., deep=True)) traces
+everything, for make wave and make sim WAVES=1.
 An unchanged build is not rebuilt: the stamp OUTDIR/<binary>.ok holds a digest of the
 command, the tool's version, the parameters and every source's contents."""
 import fcntl
@@ -37,7 +45,7 @@ def pkg_flags(kind, *pkgs):
     return p.stdout.strip()
 
 
-def harness(out, params_vh, params_h, rtl="rtl", opt="", demo=False, jobs=2):
+def harness(out, params_vh, params_h, rtl="rtl", opt="", demo=False, jobs=2, trace="top"):
     """Build (unless its stamp is fresh) the harness of the build params_vh / params_h
     describe, from the RTL in rtl, in directory out; returns the binary's path. Failure
     with the first error and the log's path when Verilator or the compiler refuses it."""
@@ -50,6 +58,10 @@ def harness(out, params_vh, params_h, rtl="rtl", opt="", demo=False, jobs=2):
     binary, main = ("demo", "tb/demo.cpp") if demo else ("harness", "tb/harness.cpp")
     extra_cflags = f" {pkg_flags('--cflags', 'sdl2')} -I{ROOT}/tb" if demo else ""
     extra_libs = f" {pkg_flags('--libs', 'sdl2')}" if demo else ""
+    if trace not in ("top", "deep"):
+        raise Failure(f"harness: trace must be top or deep, not {trace!r}")
+    tracing = ["--trace-fst"] + (["--trace-depth", "1"] if trace == "top" else [])
+    trace_def = " -DSTRAND_TRACE_TOP=1" if trace == "top" else ""
     optflags, cxxopt = ["-O3"], "-O2"
     if opt == "fast":
         optflags, cxxopt = ["-O3", "-MAKEFLAGS", "OPT_FAST=-O0 OPT_SLOW=-O0 OPT_GLOBAL=-O0"], "-O0"
@@ -65,10 +77,11 @@ def harness(out, params_vh, params_h, rtl="rtl", opt="", demo=False, jobs=2):
     if not srcs:
         raise Failure(f"no Verilog sources in {rtl}")
     cmd = (["verilator", "--cc", "--exe", "--build", "-j", str(jobs)] + optflags
-           + ["--trace-fst", "--x-assign", "unique", "--x-initial", "unique"] + objcache
+           + tracing + ["--x-assign", "unique", "--x-initial", "unique"] + objcache
            + ["-Mdir", os.path.join(out, "obj"), "--top-module", "sim_top", "-o", os.path.join(out, binary),
               f"-I{GEN}", f"-I{out}", f"-I{rtl}",
-              "-CFLAGS", f"{cxxopt} -I{ROOT}/model -I{GEN} -I{out} {pkg_flags('--cflags', 'inih', 'cairo')}{extra_cflags}",
+              "-CFLAGS", f"{cxxopt}{trace_def} -I{ROOT}/model -I{GEN} -I{out} {pkg_flags('--cflags', 'inih', 'cairo')}"
+                         f"{extra_cflags}",
               "-LDFLAGS", f"{LIBSTRAND} {pkg_flags('--libs', 'inih', 'cairo')}{extra_libs} -lm",
               os.path.join(ROOT, "tb", "sim_top.v")] + srcs + [os.path.join(ROOT, main)])
     inputs = (srcs + sorted(glob.glob(os.path.join(rtl, "*.vh"))) + gen_files()
@@ -98,7 +111,7 @@ def harness(out, params_vh, params_h, rtl="rtl", opt="", demo=False, jobs=2):
     return exe
 
 
-def harness_for(scene, out, rtl="rtl", order=None, opt="", demo=False):
+def harness_for(scene, out, rtl="rtl", order=None, opt="", demo=False, trace="top"):
     """`strand hwgen` for SCENE's build into OUT.gen, then harness() in OUT."""
     out = os.path.abspath(os.path.join(ROOT, out))
     gen_dir = out + ".gen"
@@ -107,17 +120,19 @@ def harness_for(scene, out, rtl="rtl", order=None, opt="", demo=False):
         vh = f.read()
     with open(os.path.join(gen_dir, "params.h")) as f:
         h = f.read()
-    return harness(out, vh, h, rtl=rtl, opt=opt, demo=demo)
+    return harness(out, vh, h, rtl=rtl, opt=opt, demo=demo, trace=trace)
 
 
 def build_key(params):
     return hashlib.sha1(repr(sorted(params.items())).encode()).hexdigest()[:10]
 
 
-def harness_dir(params, fault=""):
+def harness_dir(params, fault="", deep=False):
     """Where the harness of a build (strand_core's parameters) lives under build/vl/, so that
-    every script that needs the same build finds the same binary."""
-    return os.path.join(BUILD, "vl", "b_" + build_key(params) + (f"_fault_{fault}" if fault else ""))
+    every script that needs the same build finds the same binary (deep: the build that traces
+    every signal)."""
+    return os.path.join(BUILD, "vl", "b_" + build_key(params) + (f"_fault_{fault}" if fault else "")
+                        + ("_deep" if deep else ""))
 
 
 def main(argv):
@@ -128,7 +143,8 @@ def main(argv):
     rtl = argv[2] if len(argv) > 2 else "rtl"
     order = argv[3] if len(argv) > 3 and argv[3] else None
     try:
-        harness_for(scene, out, rtl, order, opt=os.environ.get("HARNESS_OPT", ""), demo=os.environ.get("DEMO") == "1")
+        harness_for(scene, out, rtl, order, opt=os.environ.get("HARNESS_OPT", ""), demo=os.environ.get("DEMO") == "1",
+                    trace="deep" if os.environ.get("TRACE") == "deep" else "top")
     except Failure as e:
         log = os.path.join(os.path.abspath(os.path.join(ROOT, out)), "build.log")
         if "verilator" in str(e) and os.path.exists(log):
