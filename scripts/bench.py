@@ -192,17 +192,34 @@ def rope(rows):
         return path, st.group(1), st.group(2)
 
     cpu_iters = r["cpu_d"] / 60 / r["nodes"]
+    mhz = r["mhz"]
     out = ["", f"**The 1024-node rope at 60 frames per second** ({ROPE}, pipelined, red/black). Measured on the "
-               f"RTL: {per_iter} cycles per constraint iteration and {rest} for the rest of a frame. The clock a "
-               "frame of 1/60 s needs for each iteration count, and the stretch the frame engine reaches with it "
+               f"RTL: {per_iter} cycles per constraint iteration and {rest} for the rest of a frame (runs of 1 and 2 "
+               "iterations; every other figure of the table's first columns follows from these two). For each iteration "
+               "count: the clock a frame of 1/60 s needs; the constraint updates per clock over the whole frame; "
+               "with the build's fmax, its updates per second against one CPU core (cpu_rope, double, the same scene "
+               f"with that many iterations, the fastest of {CPU_REPEATS} runs, measured now; the CPU's rate per update "
+               "changes little with the iterations, the core's grows as its fixed costs a frame, the Verlet pass and "
+               "the pipe's drain, are shared by more of them); and the stretch the frame engine reaches with it "
                f"(`{scene}` with that many iterations, 100 frames, the mouse pulling for 20; the largest stretch counts "
                "frames 1 to 100, not the scene as written, where the rope lies 20 % short of its rest length; goal: at "
                "most 0.05 % at rest):", "",
-           "| iterations per substep | clock for 60 frames/s, MHz | largest stretch | stretch at the end |",
-           "|--:|--:|--:|--:|"]
+           "| iterations per substep | clock for 60 frames/s, MHz | updates per clock, whole frame (of M) | "
+           f"updates/s at {mhz:.1f} MHz, M | CPU double, M/s | core / CPU double | largest stretch | stretch at the end |"
+           if mhz else "| iterations per substep | clock for 60 frames/s, MHz | updates per clock, whole frame (of M) | "
+           "largest stretch | stretch at the end |",
+           "|--:|--:|--:|--:|--:|--:|--:|--:|" if mhz else "|--:|--:|--:|--:|--:|"]
     for n in ITER_STEPS:
-        _, smax, sfin = stretch(n)
-        out.append(f"| {n} | {60 * (rest + n * per_iter) / 1e6:.2f} | {smax} % | {sfin} % |")
+        path, smax, sfin = stretch(n)
+        per_clock = r["nodes"] * n / (rest + n * per_iter)
+        cells = [f"{n}", f"{60 * (rest + n * per_iter) / 1e6:.2f}", f"{per_clock:.3f} ({per_clock / r['m']:.3f} M)"]
+        if mhz:
+            cpu_n, _ = cpu_rate(path, "redblack", "double")
+            hw = per_clock * mhz * 1e6
+            cells += [f"{hw / 1e6:.1f}", f"{cpu_n / 1e6:.2f}", f"**{hw / cpu_n:.2f}x**"]
+            print(f"bench rope {n} iterations: {per_clock:.3f} updates/clock, {hw / 1e6:.1f} M/s at {mhz:.1f} MHz, "
+                  f"CPU {cpu_n / 1e6:.2f} M/s double", flush=True)
+        out.append("| " + " | ".join(cells + [f"{smax} %", f"{sfin} %"]) + " |")
     out.append("")
     if r["mhz"]:
         iters = int((r["mhz"] * 1e6 / 60 - rest) // per_iter)
