@@ -94,6 +94,9 @@ PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [
 # which took 96 % of the device's TRELLIS_COMB before the root's stages were trimmed, did not
 # get past nextpnr-ecp5's analytical placer then).
 PIPE_PACK = []
+# The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
+# where the cells of a unit of the largest build go.
+HIER_BUILD = "8x128_pipe"
 # Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
 # pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
 # router was still resolving some 124,000 overused wires after 25 minutes of routing here.
@@ -120,7 +123,8 @@ def flows_of(build):
     if placed == "ice40":  # a UP5K candidate: only what the UP5K needs
         return ["ice40", "ice40_place"]
     if placed == "ecp5p":  # a pipelined build: its cells, and the ECP5 if it is placed or packed
-        return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) or build in PIPE_PACK else [])
+        return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) or build in PIPE_PACK else []) \
+            + (["ecp5_hier"] if build == HIER_BUILD else [])
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
 
 
@@ -577,6 +581,34 @@ def report(bdir, gen, out, srcs):
         per_node = [(b, full_params(b, gen)["M"] * full_params(b, gen)["K"], sum(counts(b, "generic").values()))
                     for b in MAIN if counts(b, "generic") is not None]
         w("Generic cells per node: " + ", ".join(f"{b} {fmt(t // n)}" for b, n, t in per_node) + ".")
+        w("")
+
+    hier = res[HIER_BUILD].get("ecp5_hier")
+    w(f"## Where a pipelined unit's cells go ({HIER_BUILD}, ECP5)")
+    w("")
+    if hier is None:
+        w(f"{NOT_RUN} for this RTL.")
+        w("")
+    else:
+        rows = hierarchy_rows(hier["mods"], hier["top"])
+        kinds = [("LUT4", "LUT4"), ("CCU2C", "CCU2C (carry)"), ("TRELLIS_FF", "FF"), ("MULT18X18D", "MULT18X18D"),
+                 ("DP16KD", "DP16KD"), ("TRELLIS_DPR16X4", "DPR16X4")]
+        comb = lambda t: t.get("LUT4", 0) + 2 * t.get("CCU2C", 0)
+        whole = comb(rows[0]["subtree_types"])
+        w(f"`synth_ecp5 -noflatten` of strand_core as {HIER_BUILD} (the core, without the shell; flattened, as "
+          "placed, synthesis merges a little across module borders, so the sums differ slightly from the ECP5 "
+          "table above). Each row is one instance of a module with everything under it; *logic* is LUT4 + 2 CCU2C "
+          "(a carry cell takes two of a slice's LUTs), its share of the whole core's.")
+        w("")
+        w("| module | instances (per parent) | " + " | ".join(h for _, h in kinds) + " | logic, share |")
+        w("|---|--:|" + "--:|" * len(kinds) + "--:|")
+        for r in rows:
+            n = r["instances"]
+            t = r["subtree_types"]
+            name = "&nbsp;&nbsp;" * (2 * r["depth"]) + r["name"]
+            w(f"| {name} | {fmt(n)} ({fmt(r['per_parent'])}) | "
+              + " | ".join(fmt(round(t.get(k, 0) / n)) for k, _ in kinds)
+              + f" | {fmt(round(comb(t) / n))}, {pct(comb(t), whole)} |")
         w("")
 
     w("## How to regenerate")

@@ -79,6 +79,12 @@ SYNTH_CMDS = {
         "tee -q -o xilinx.stat.json stat -json",
         "stat",
     ],
+    # the ECP5 cells module by module (one pipelined build: where a unit's cells go)
+    "ecp5_hier": [
+        f"synth_ecp5 -noflatten -top {TOP} -run :check",
+        *CHECK_STAGE,
+        "tee -q -o ecp5_hier.stat.json stat -json",
+    ],
     # place and route: the core behind the shell, behind tb/pnr_wrap.v
     "ecp5_place": [
         f"synth_ecp5 -top {PNR_TOP} -run :check",
@@ -462,20 +468,29 @@ def hierarchy_rows(mods, top):
     """The instance tree by module name (instances of one module with different
     parameters, e.g. a unit number, are merged), depth first, biggest subtree first.
     Each row: depth, name, instances (in all), per_parent, and cell totals over all
-    its instances: own, own_ff, own_mux (the module's own cells) and subtree."""
+    its instances: own, own_ff, own_mux (the module's own cells) and subtree; and the same
+    by cell type: own_types, subtree_types ({type: count} over all instances)."""
     memo = {}
     acc = {}
     kids = {}
 
+    def add(into, counts, mult):
+        for t, n in counts.items():
+            into[t] = into.get(t, 0) + mult * n
+
     def walk(mod, path, mult):
         own = own_counts(mods, mod)
         cls = generic_classes(own)
-        r = acc.setdefault(path, dict(instances=0, own=0, own_ff=0, own_mux=0, subtree=0))
+        r = acc.setdefault(path, dict(instances=0, own=0, own_ff=0, own_mux=0, subtree=0, own_types={},
+                                      subtree_types={}))
         r["instances"] += mult
         r["own"] += mult * cls["total"]
         r["own_ff"] += mult * cls["ff"]
         r["own_mux"] += mult * cls["mux"]
-        r["subtree"] += mult * sum(flat_counts(mods, mod, memo).values())
+        sub = flat_counts(mods, mod, memo)
+        r["subtree"] += mult * sum(sub.values())
+        add(r["own_types"], own, mult)
+        add(r["subtree_types"], sub, mult)
         for t, n in mods[mod]["num_cells_by_type"].items():
             if t in mods:
                 child = path + (base_name(t),)
