@@ -48,6 +48,8 @@ FRAMES = {"4x5": 400, "8x8": 120, "16x16": 30}
 MODES = ["lockstep", "rtl", "model"]
 REPEATS = 3
 TARGET = 2.0
+GOAL_PER_UNIT, GOAL_MHZ, GOAL_RATIO, GOAL_STRETCH = 0.9, 100.0, 10.0, 0.05  # the speed work's goals
+GOALS = {}  # what physics(), rope() and springs() measured of them, for the page's first table
 
 
 def sh(cmd):
@@ -135,10 +137,19 @@ def physics():
     notes = ["", f"CPU: `{flags}`, one core, the same scene in the same order, the fastest of {CPU_REPEATS} timed runs of "
              f"at least {CPU_SECONDS} s each; its double frames are the frame "
              "engine's bit for bit (`cpu_rope --check`, in make test).", ""]
+    # the goals: updates per clock per unit on long bodies (N >= 256), per rule
+    for rule in RULES:
+        long_pipe = [r for r in rows if r["arch"] == "pipelined" and r["rule"] == rule and r["nodes"] >= 256]
+        if long_pipe:
+            best = max(long_pipe, key=lambda r: r["per_clock_c"] / r["m"])
+            GOALS[f"per_unit_{rule}"] = (best["build"], best["per_clock_c"] / best["m"])
     # the largest placed pipelined build against the CPU, and the rope
     pipe = [r for r in rows if r["arch"] == "pipelined" and r["hw"]]
     if pipe:
+        GOALS["fmax"] = max((r["mhz"], r["build"]) for r in pipe)
+    if pipe:
         big = max(pipe, key=lambda r: r["nodes"] * 1000 + r["m"])
+        GOALS["ratio"] = (big["build"], big["hw"] / big["cpu_d"], big["mhz"])
         notes.append(f"The largest pipelined build placed on the ECP5-85F is **{big['build']}** ({big['nodes']} nodes, "
                      f"{big['m']} units): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
                      f"**{big['hw'] / big['cpu_d']:.2f}x** one CPU core in double and {big['hw'] / big['cpu_f']:.2f}x in float "
@@ -220,10 +231,13 @@ def rope(rows):
             print(f"bench rope {n} iterations: {per_clock:.3f} updates/clock, {hw / 1e6:.1f} M/s at {mhz:.1f} MHz, "
                   f"CPU {cpu_n / 1e6:.2f} M/s double", flush=True)
         out.append("| " + " | ".join(cells + [f"{smax} %", f"{sfin} %"]) + " |")
+        GOALS["stretch"] = (n, float(sfin))
     out.append("")
     if r["mhz"]:
         iters = int((r["mhz"] * 1e6 / 60 - rest) // per_iter)
         _, smax, sfin = stretch(iters)
+        if iters > GOALS["stretch"][0]:  # the most iterations a frame measured
+            GOALS["stretch"] = (iters, float(sfin))
         out.append(f"At its fmax of {r['mhz']:.1f} MHz the build fits **{iters} iterations** a frame (largest "
                    f"stretch {smax} %, {sfin} % at the end).")
     else:
@@ -246,6 +260,8 @@ def springs():
             f = rtl_figures(scene, 3, order)
             cyc, per_clock = f["cycles_per_frame"], f["springs_per_clock"]
             lines.append(f"| {b} | {arch} | {m * k - 1} | {cyc} | {per_clock:.4f} ({per_clock / m:.3f} M) |")
+            if arch == "pipelined" and m * k >= 256:
+                GOALS["per_unit_springs"] = (b, per_clock / m)
             print(f"bench springs {b} {arch}: {cyc} cycles/frame, {per_clock:.4f} spring updates/clock", flush=True)
     return lines
 
@@ -368,9 +384,45 @@ def main():
         lines.append(f"| {b} | {m * k} | {cycles} | {s['lockstep']:.0f} | {s['rtl']:.0f} | {s['model']:.0f} | {cost:.2f}x |")
     lines += ["", f"Target: lockstep costs at most {TARGET:g}x the RTL alone. Measured: at most {worst:.2f}x, "
               f"so the target is {'met' if worst <= TARGET else 'not met'}.", ""]
+    # the goals first, under the header: every figure is one the sections below measured
+    at = lines.index("## Physics throughput: the core against one CPU core")
+    lines[at:at] = goals_table()
     with open(os.path.join(ROOT, out), "w") as f:
         f.write("\n".join(lines))
     print(f"wrote {out}")
+
+
+def goals_table():
+    """The speed work's goals against this run's figures (from GOALS), as markdown lines."""
+    met = lambda ok: "**met**" if ok else "**missed**"
+    rows = []
+    for key, what in (("per_unit_centred", "centred rule"), ("per_unit_pairwise", "pairwise rule"),
+                      ("per_unit_springs", "spring pass")):
+        if key in GOALS:
+            b, v = GOALS[key]
+            rows.append(f"| >= {GOAL_PER_UNIT} x M updates per clock on a long body (N >= 256), {what} | {b} "
+                        f"pipelined: {v:.3f} M (the ceiling of one distance datapath a unit: "
+                        f"{'1' if key == 'per_unit_springs' else '0.5'} M) | {met(v >= GOAL_PER_UNIT)} |")
+    if "fmax" in GOALS:
+        mhz, b = GOALS["fmax"]
+        rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | the best placed pipelined build, {b}: {mhz:.1f} MHz | "
+                    f"{met(mhz >= GOAL_MHZ)} |")
+    else:
+        rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | no pipelined build placed | **not measured** |")
+    if "ratio" in GOALS:
+        b, ratio, mhz = GOALS["ratio"]
+        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | {b} at {mhz:.1f} MHz: {ratio:.2f}x "
+                    f"(double) | {met(ratio >= GOAL_RATIO)} |")
+    else:
+        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | no pipelined build placed | "
+                    "**not measured** |")
+    if "stretch" in GOALS:
+        n, st = GOALS["stretch"]
+        rows.append(f"| the 1024-node rope at rest: stretch <= {GOAL_STRETCH} % | {st} % after 100 frames at {n} "
+                    f"iterations | {met(st <= GOAL_STRETCH)} |")
+    return ["## The goals, measured", "",
+            "The speed work's four goals against the figures of this page (the sections below say how each is "
+            "measured).", "", "| goal | measured | |", "|---|---|---|", *rows, ""]
 
 
 if __name__ == "__main__":
