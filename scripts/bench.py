@@ -147,6 +147,10 @@ def physics():
     pipe = [r for r in rows if r["arch"] == "pipelined" and r["hw"]]
     if pipe:
         GOALS["fmax"] = max((r["mhz"], r["build"]) for r in pipe)
+    bigger = [r for r in rows if r["arch"] == "pipelined" and r["rule"] == "centred" and not r["hw"]
+              and pipe and r["nodes"] > max(x["nodes"] for x in pipe) and "packs into" in r["mhz_text"]]
+    if bigger:  # a larger build fits the device but has no fmax: the ratio above is not the largest's
+        GOALS["unplaced"] = "; " + ", ".join(f"{r['build']} {r['mhz_text']}" for r in bigger)
     if pipe:
         big = max(pipe, key=lambda r: r["nodes"] * 1000 + r["m"])
         GOALS["ratio"] = (big["build"], big["hw"] / big["cpu_d"], big["mhz"])
@@ -411,8 +415,8 @@ def goals_table():
         rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | no pipelined build placed | **not measured** |")
     if "ratio" in GOALS:
         b, ratio, mhz = GOALS["ratio"]
-        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | {b} at {mhz:.1f} MHz: {ratio:.2f}x "
-                    f"(double) | {met(ratio >= GOAL_RATIO)} |")
+        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | the largest placed pipelined chain, "
+                    f"{b}, at {mhz:.1f} MHz: {ratio:.2f}x (double){GOALS.get('unplaced', '')} | {met(ratio >= GOAL_RATIO)} |")
     else:
         rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | no pipelined build placed | "
                     "**not measured** |")
