@@ -298,19 +298,35 @@ def update_doc(doc, rows, frows):
             last_fault = i
             if name in faults:
                 lines[i] = fault_row(*faults.pop(name))
-    if ran:
-        sys.exit("formal: --doc with --only: no row for %s in %s (make formal writes the table first)" % (", ".join(ran), doc))
+    # a task the table lacks (a new .sby file or task): its row goes in name order, the
+    # checker's text on the first row of its file
+    task_rows = [i for i, l in enumerate(lines) if l.startswith("| ") and len(l.split(" | ")) == 7
+                 and l.split(" | ")[0][2:] not in ("task", "---")]
+    if ran and not task_rows:
+        sys.exit("formal: --doc with --only: no table of tasks in %s (make formal writes the table first)" % doc)
+    seen_files = set()
+    for name in sorted(ran):
+        stem, task, path, mode, depth, params, status, dt, where = ran[name]
+        names = [lines[i].split(" | ")[0][2:] for i in task_rows]
+        at = next((task_rows[j] for j, n in enumerate(names) if n > name), task_rows[-1] + 1)
+        first = stem not in seen_files and not any(n.startswith(stem + "_") for n in names)
+        seen_files.add(stem)
+        lines.insert(at, "| %s | %s | %s | %s | %s | %s | %.0f s |" % (
+            name, cell(proves(path)) if first else "(as above)", mode, depth, params or "-", status, dt))
+        task_rows = [i if i < at else i + 1 for i in task_rows] + [at]
+        task_rows.sort()
     if faults:
         if last_fault is None:
             sys.exit("formal: --doc with --only: no table of planted faults in %s (make formal writes it)" % doc)
         lines[last_fault + 1:last_fault + 1] = [fault_row(*f) for f in faults.values()]
     now = (["%s_%s (%s, %.0f s)" % (r[0], r[1], r[6], r[7]) for r in rows]
            + ["fault %s (%s, %.0f s)" % (f[0], "caught" if f[3] == "FAIL" else "NOT caught", f[4]) for f in frows])
-    head = "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced: "
-    earlier = [item for l in lines if l.startswith(head)  # the earlier partial runs' entries not run now
-               for item in re.findall(r"(?:fault )?\w+ \([^)]*\)", l[len(head):])
+    head = "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced or added: "
+    heads = (head, "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced: ")
+    earlier = [item for l in lines for h in heads if l.startswith(h)  # the earlier partial runs' entries not run now
+               for item in re.findall(r"(?:fault )?\w+ \([^)]*\)", l[len(h):])
                if item.split(" (")[0] not in {n.split(" (")[0] for n in now}]
-    lines = [l for l in lines if not l.startswith(head)] + ["", head + ", ".join(earlier + now) + "."]
+    lines = [l for l in lines if not l.startswith(heads)] + ["", head + ", ".join(earlier + now) + "."]
     doc_region.rewrite(doc, "formal", "\n".join(l for i, l in enumerate(lines) if l or (i and lines[i - 1])) + "\n")
 
 
