@@ -707,8 +707,9 @@ def cmd_all(a):
         print(f"FAIL synth: {len(failures)} step(s) failed; {a.out} not written", file=sys.stderr)
         return 1
     total, met = report(a.build, a.gen, a.out, srcs)
-    print(f"synth: wrote {a.out} in {time.time() - t0:.0f} s; {CHECK_CONFIG}: {fmt(total)} generic cells, "
-          f"target of {fmt(TARGET_CELLS)} {'met' if met else 'not met'}")
+    cells = (f"{fmt(total)} generic cells, target of {fmt(TARGET_CELLS)} {'met' if met else 'not met'}"
+             if total is not None else "generic cells not run for this RTL")  # --only without it
+    print(f"synth: wrote {a.out} in {time.time() - t0:.0f} s; {CHECK_CONFIG}: {cells}")
     return 0
 
 
