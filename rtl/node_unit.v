@@ -228,7 +228,10 @@ module node_unit #(
 
     // ---- the pinned and written flags, one decoder per node: a write at a variable bit
     // index (flags[idx] <= 1) synthesises to a mask shifted by the index, a carry chain
-    // on the path from the write index that sets the clock ----
+    // on the path from the write index that sets the clock. The write strobe is the
+    // flags' one shared clock enable and the decoder's match goes into their data: an
+    // iCE40 logic block's eight flip-flops share one enable, so a flag with an enable of
+    // its own could not pack with the LUT before it (about 400 cells at K = 256) ----
     wire [K-1:0] written_q;
     genvar n;
     generate
@@ -240,8 +243,8 @@ module node_unit #(
                     pinned_n  <= 1'b0;
                     written_n <= 1'b0;
                 end else begin
-                    if (pin_en && pin_idx == N_ID) pinned_n  <= 1'b1;
-                    if (we && widx == N_ID)        written_n <= 1'b1;
+                    if (pin_en) pinned_n  <= pinned_n  | (pin_idx == N_ID);
+                    if (we)     written_n <= written_n | (widx == N_ID);
                 end
             assign pinned_q[n]  = pinned_n;
             assign written_q[n] = written_n;
