@@ -88,12 +88,13 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # through synth_ecp5 and nextpnr; the 8x8 (the 8x128's units, fewer nodes) and the 16x16
 # (256 MULT18X18D) get generic cells only, and the report gives the multipliers they would
 # need from the 4x5's per unit.
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [1], "cloth_pipe": [1]}
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [], "cloth_pipe": [1]}
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
-# but not placed, for a build too big to place in make synth's time (none now: the 8x128,
-# which took 96 % of the device's TRELLIS_COMB before the root's stages were trimmed, did not
-# get past nextpnr-ecp5's analytical placer then).
-PIPE_PACK = []
+# but not placed and routed in make synth: the 8x128. Its placement alone takes about 40
+# minutes here, and nextpnr-ecp5's router1 still had some 243,000 overused wires after 11
+# minutes of routing, falling by about 200 per 1,000 iterations, so its route would end
+# hours after the rest of make synth. `synth.py pnr 8x128_pipe` places and routes it alone.
+PIPE_PACK = ["8x128_pipe"]
 # The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
 # where the cells of a unit of the largest build go.
 HIER_BUILD = "8x128_pipe"
