@@ -170,8 +170,8 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
         o->nidx = (uint32_t)c->nidx;
         o->counter = (uint32_t)c->counter;
     }
-    o->units = m;
-    for (int u = 0; u < m; u++) {
+    o->lanes = c->hp.wb;
+    for (int u = 0; u < c->hp.wb; u++) {
         o->wb_valid[u] = c->wb_valid[u];
         o->wb_idx[u] = c->wb_idx[u];
         o->wb_x[u] = to_word(f, c->wb_x[u]);
@@ -228,11 +228,11 @@ static void reset_all(cyc_model *c)
     c->running = c->done = false;
     c->vidx = 0;
     c->pass_b = c->pass_c = c->pass_d = false;
-    for (int u = 0; u < c->hp.m; u++) {
-        c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
-        c->wb_valid[u] = false;
-        c->wb_idx[u] = 0;
-        c->wb_x[u] = c->wb_y[u] = c->wb_z[u] = 0;
+    for (int u = 0; u < c->hp.m; u++) c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
+    for (int l = 0; l < c->hp.wb; l++) {
+        c->wb_valid[l] = false;
+        c->wb_idx[l] = 0;
+        c->wb_x[l] = c->wb_y[l] = c->wb_z[l] = 0;
     }
     c->st_running = c->st_done = false;
     c->sp_running = c->sp_done = false;
@@ -246,15 +246,18 @@ static void reset_all(cyc_model *c)
     c->sq_done = false;
 }
 
-/* node_unit's write-back lane: a write to unit u shows in the next cycle. */
-static void lane_write(cyc_model *c, bool *written, int u, int idx, int node)
+/* node_unit's write-back lanes: a write by unit u's write port `port` (0, or 1 with PAIR)
+   shows on lane u (1 + PAIR) + port in the next cycle. */
+static void lane_write_port(cyc_model *c, bool *written, int u, int port, int idx, int node)
 {
-    written[u] = true;
-    c->wb_idx[u] = (uint32_t)idx;
-    c->wb_x[u] = c->s.pos[node][0];
-    c->wb_y[u] = c->s.pos[node][1];
-    c->wb_z[u] = c->s.pos[node][2];
+    int l = u * (1 + c->hp.pair) + port;
+    written[l] = true;
+    c->wb_idx[l] = (uint32_t)idx;
+    c->wb_x[l] = c->s.pos[node][0];
+    c->wb_y[l] = c->s.pos[node][1];
+    c->wb_z[l] = c->s.pos[node][2];
 }
+static void lane_write(cyc_model *c, bool *written, int u, int idx, int node) { lane_write_port(c, written, u, 0, idx, node); }
 
 /* A node index from a {unit, node} address (the address decoders of strand_core), or -1. */
 static int node_of(const cyc_model *c, uint32_t addr)
@@ -538,7 +541,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const hw_params *hp = &c->hp;
     const fx_format *f = &c->s.fmt;
     const int m = hp->m, k = hp->k, n = m * k;
-    bool written[CYC_MAX_UNITS] = {false};
+    bool written[CYC_MAX_LANES] = {false};
     uint32_t rd_u = in->rd_addr >> hp->iw & ((1u << hp->uw) - 1), rd_n = in->rd_addr & ((1u << hp->iw) - 1);
 
     c->cycle++;
@@ -627,7 +630,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         int node = c->uidx * k + c->nidx;
         if (sim_fx_centred_node(&c->s, node)) lane_write(c, written, c->uidx, c->nidx, node);
     }
-    for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
+    for (int l = 0; l < hp->wb; l++) c->wb_valid[l] = written[l];
 
     if (!hp->arch && hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
     if (hp->en_springs && !chain_streams(hp)) pair_seq_edge(c, &c->force, force_start, true, written);
@@ -651,7 +654,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             if (slot) c->sp_counter++;
         }
     }
-    for (int u = 0; u < m; u++) c->wb_valid[u] = written[u];
+    for (int l = 0; l < hp->wb; l++) c->wb_valid[l] = written[l];
 
     /* chain_stream control: sweeps of SP cycles (the last of the pass SL), colour 0 then 1,
        ITER times. */

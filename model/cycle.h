@@ -24,6 +24,7 @@ extern "C" {
 #endif
 
 #define CYC_MAX_UNITS 256
+#define CYC_MAX_LANES (2 * CYC_MAX_UNITS) /* write-back lanes: one a unit, two with PAIR */
 
 enum { PH_IDLE = 0, PH_INIT = 1, PH_VERLET = 2, PH_CONSTRAIN = 3, PH_FORCE = 4, PH_GROUND = 5, PH_GRAB = 6 };
 enum { SQ_IDLE, SQ_LOAD_C, SQ_LOAD_D, SQ_UP, SQ_UP_W, SQ_DN_W, SQ_NEXT };             /* chain_sequencer */
@@ -48,9 +49,9 @@ typedef struct {
     int phase;
     bool fv, fec;
     uint32_t uidx, nidx, counter;
-    int units;
-    bool wb_valid[CYC_MAX_UNITS];
-    uint32_t wb_idx[CYC_MAX_UNITS], wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS], wb_z[CYC_MAX_UNITS];
+    int lanes; /* the build's WB: lane u (1 + PAIR) + l is unit u's write port l */
+    bool wb_valid[CYC_MAX_LANES];
+    uint32_t wb_idx[CYC_MAX_LANES], wb_x[CYC_MAX_LANES], wb_y[CYC_MAX_LANES], wb_z[CYC_MAX_LANES];
 } cyc_outputs;
 
 /* pair_sequencer: one instance (the pairwise constraints, or the spring pass). */
@@ -95,9 +96,9 @@ typedef struct {
     bool pass_d, ground_d; /* stage D: it is written */
     int idx_d;
     fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS];
-    bool wb_valid[CYC_MAX_UNITS];
-    uint32_t wb_idx[CYC_MAX_UNITS];
-    fx_t wb_x[CYC_MAX_UNITS], wb_y[CYC_MAX_UNITS], wb_z[CYC_MAX_UNITS];
+    bool wb_valid[CYC_MAX_LANES];   /* the write-back lanes (WB of them) */
+    uint32_t wb_idx[CYC_MAX_LANES];
+    fx_t wb_x[CYC_MAX_LANES], wb_y[CYC_MAX_LANES], wb_z[CYC_MAX_LANES];
     /* chain_sequencer (rule 0) */
     int sq_state, sq_iter, sq_timer;
     int uidx, nidx, counter;

@@ -18,7 +18,7 @@ extern "C" {
 
 /* The RTL build a scene needs: every parameter of strand_core (the table of
    scripts/gen_params.py, lower-case names: w, f, m, k, ..., en_springs, ...) and
-   its derived widths (uw, iw, aw, cw, sw, dbg_w). */
+   its derived widths (uw, iw, aw, cw, sw, pair, wb, dbg_w, ...). */
 typedef struct {
 #define STRAND_FIELD(NAME, name, ...) int name;
     STRAND_PARAMS(STRAND_FIELD)

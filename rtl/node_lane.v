@@ -9,7 +9,10 @@
  *
  * Storage (strand_ram, reset-free): pos (positions; port A for the pass and the
  * sequencers, port B for the external read port), prev (previous positions) and,
- * with EN_SPRINGS, acc (the spring force gathered this substep).
+ * with EN_SPRINGS, acc (the spring force gathered this substep). With PAIR (a chain's
+ * pipelined constraint pass) pos and prev are bank_rams of two banks, even and odd
+ * nodes: the pass reads a pair of neighbours a clock (q_e, q_o, qp_e, qp_o) and writes
+ * up to two (the second write port, pos only); every other reader still sees one port A.
  *
  * The Verlet step of this axis, from port A's data q, qp, qa (model/engine_body.h
  * verlet_node(), every operation a saturating fx_add / fx_mul in the model's order):
@@ -55,6 +58,15 @@ module node_lane #(
     input  wire [IW-1:0] acc_clear_idx,
     input  wire          acc_we,     // the spring pass writes the force of node widx
     input  wire [W-1:0]  acc_w,
+    // PAIR (the chain's pipelined constraint pass): a pair read instead of port A (the
+    // even bank at row pair_row_e, the odd bank at pair_row_o), and a second position
+    // write, to the other bank than the first write's
+    input  wire          pair_re,
+    input  wire [IW-1:0] pair_row_e,
+    input  wire [IW-1:0] pair_row_o,
+    input  wire          we2,
+    input  wire [IW-1:0] widx2,
+    input  wire [W-1:0]  wdata2,
 
     // the pass pipeline (node_unit's stage valids) and how the write is formed
     input  wire          stage_a,    // a pass's node is in stage A (its data arrive now)
@@ -83,6 +95,10 @@ module node_lane #(
     output wire [W-1:0]  qp,
     output wire [W-1:0]  qa,
     output wire [W-1:0]  b_data,     // port B: position (node_unit masks unwritten nodes)
+    output wire [W-1:0]  q_e,        // PAIR: the banks' words, position and previous position
+    output wire [W-1:0]  q_o,        //   (a pair read's, or a port-A read's two rows)
+    output wire [W-1:0]  qp_e,
+    output wire [W-1:0]  qp_o,
     output wire          touch,      // stage W: |mouse - n| < box on this axis
     output wire          hit,        // stage W, AXIS = GROUND_AXIS: past the boundary
     output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)
@@ -137,15 +153,19 @@ module node_lane #(
     assign wdata      = pass_w ? (EN_GROUND && ground_w ? g_w : GRAB && grab_w ? mouse : n_w) : w_pos;
     assign wprev_data = pass_w ? (EN_GROUND && ground_w ? gp_w : np) : w_pin ? w_pos : w_prev;
 
-    strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pos (
-        .clk(clk), .we(we), .waddr(widx), .wdata(wdata),
+    // positions and previous positions: two banks with PAIR (the second write port and the
+    // pair read are the pipelined pass's; the previous positions have only the first)
+    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR)) u_pos (
+        .clk(clk), .we(we), .waddr(widx), .wdata(wdata), .we2(PAIR != 0 && we2), .waddr2(widx2), .wdata2(wdata2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(q),
+        .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(q_e), .rdata_o(q_o),
         .re_b(1'b1), .raddr_b(b_addr), .rdata_b(b_data));
     /* verilator lint_off PINCONNECTEMPTY */
     // the previous positions and the forces have one reader (port A)
-    strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0)) u_prev (
-        .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
+    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_prev (
+        .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data), .we2(1'b0), .waddr2(widx2), .wdata2(wdata2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
+        .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qp_e), .rdata_o(qp_o),
         .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
 
     // ---- stage A: the velocity ----

@@ -85,14 +85,31 @@ module node_unit #(
     input  wire             pin_en,       // pin node pin_idx
     input  wire [IW-1:0]    pin_idx,
 
+    // PAIR (a chain's pipelined constraint pass): a pair read instead of port A, node
+    // 2 pair_row_e (even bank) and node 2 pair_row_o + 1 (odd bank), data the next cycle
+    // with their pinned (or held) flags; and a second write, to the other bank than w_idx's
+    input  wire             pair_re,
+    input  wire [IW-1:0]    pair_row_e,
+    input  wire [IW-1:0]    pair_row_o,
+    output wire [DIM*W-1:0] pair_pos_e,
+    output wire [DIM*W-1:0] pair_pos_o,
+    output wire [DIM*W-1:0] pair_prev_e,
+    output wire [DIM*W-1:0] pair_prev_o,
+    output wire             pair_pin_e,
+    output wire             pair_pin_o,
+    input  wire             w2_en,
+    input  wire [IW-1:0]    w2_idx,
+    input  wire [DIM*W-1:0] w2_pos,
+
     // port B: external position reads
     input  wire [IW-1:0]    b_idx,
     output wire [DIM*W-1:0] b_pos,
 
-    // DEBUG: the write-back lane, a write to this unit shown the cycle after it happens
-    output wire             wb_valid,
-    output wire [IW-1:0]    wb_idx,
-    output wire [DIM*W-1:0] wb_pos
+    // DEBUG: the write-back lanes, a write to this unit shown the cycle after it happens:
+    // lane 0 the first write port's, lane 1 (PAIR) the second's
+    output wire [PAIR:0]           wb_valid,
+    output wire [(1+PAIR)*IW-1:0]  wb_idx,
+    output wire [(1+PAIR)*DIM*W-1:0] wb_pos
 );
 
     localparam integer  K_LAST_I = K - 1;
@@ -187,6 +204,28 @@ module node_unit #(
         end
     assign a_pinned = q_pin || q_grab;
 
+    // ---- PAIR: the pair read's pinned (or held) flags, one per bank ----
+    generate
+        if (PAIR != 0) begin : g_pair_pins
+            /* verilator lint_off UNUSEDSIGNAL */
+            // a node index is the row and the bank bit; the row's top bit is past K
+            wire [IW:0] node_e = {pair_row_e, 1'b0}, node_o = {pair_row_o, 1'b1};
+            /* verilator lint_on UNUSEDSIGNAL */
+            wire ok_e = node_e < K_COUNT, ok_o = node_o < K_COUNT;
+            reg  pin_e_q, pin_o_q;
+            always @(posedge clk)
+                if (pair_re) begin
+                    pin_e_q <= ok_e && (pinned_q[node_e[IW-1:0]] || (GRAB && grab_here && node_e[IW-1:0] == grab_idx));
+                    pin_o_q <= ok_o && (pinned_q[node_o[IW-1:0]] || (GRAB && grab_here && node_o[IW-1:0] == grab_idx));
+                end
+            assign pair_pin_e = pin_e_q;
+            assign pair_pin_o = pin_o_q;
+        end else begin : g_no_pair_pins
+            assign pair_pin_e = 1'b0;
+            assign pair_pin_o = 1'b0;
+        end
+    endgenerate
+
     // ---- writes: the pass's stage W, else port A's writer ----
     // The grabbed node (GRAB): the Verlet pass puts it on the pointer, px = its old x;
     // the ground pass leaves it alone.
@@ -200,6 +239,7 @@ module node_unit #(
     wire           w_pin    = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
     // the force: the Verlet pass consumes node idx_w's, the init walk and loads clear node w_idx's
     wire           acc_clear = (pass_w && !ground_w) || (w_en && w_at_rest);
+    wire           we2       = PAIR != 0 && w2_en && {1'b0, w2_idx} < K_COUNT;
     wire [DIM*W-1:0] wdata;
     wire [DIM*W-1:0] b_pos_raw;  // port B before the written flags
 
@@ -214,6 +254,8 @@ module node_unit #(
                 .we(we), .wprev(wprev), .widx(widx),
                 .acc_clear(acc_clear && {1'b0, widx} < K_COUNT), .acc_clear_idx(widx),
                 .acc_we(acc_we && {1'b0, w_idx} < K_COUNT), .acc_w(acc_w[k*W +: W]),
+                .pair_re(pair_re), .pair_row_e(pair_row_e), .pair_row_o(pair_row_o),
+                .we2(we2), .widx2(w2_idx), .wdata2(w2_pos[k*W +: W]),
                 .stage_a(running_q), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
                 .grab_w(grab_w),
                 .w_pin(w_pin),
@@ -222,6 +264,8 @@ module node_unit #(
                 .box(box[k*W +: W]), .box_neg(box_neg[k*W +: W]), .box_neg_top(box_neg_top[k]),
                 .mouse(mouse[k*W +: W]), .in_touch(in_touch), .ground(ground), .friction(friction),
                 .q(a_pos[k*W +: W]), .qp(a_prev[k*W +: W]), .qa(a_acc[k*W +: W]), .b_data(b_pos_raw[k*W +: W]),
+                .q_e(pair_pos_e[k*W +: W]), .q_o(pair_pos_o[k*W +: W]),
+                .qp_e(pair_prev_e[k*W +: W]), .qp_o(pair_prev_o[k*W +: W]),
                 .touch(touch[k]), .hit(hit[k]), .wdata(wdata[k*W +: W]));
         end
     endgenerate
@@ -243,8 +287,9 @@ module node_unit #(
                     pinned_n  <= 1'b0;
                     written_n <= 1'b0;
                 end else begin
-                    if (pin_en) pinned_n  <= pinned_n  | (pin_idx == N_ID);
-                    if (we)     written_n <= written_n | (widx == N_ID);
+                    if (pin_en)    pinned_n  <= pinned_n  | (pin_idx == N_ID);
+                    if (we || we2)
+                        written_n <= written_n | (PAIR != 0 ? (we && widx == N_ID) || (we2 && w2_idx == N_ID) : widx == N_ID);
                 end
             assign pinned_q[n]  = pinned_n;
             assign written_q[n] = written_n;
@@ -258,8 +303,33 @@ module node_unit #(
         else b_ok <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
     assign b_pos = b_ok ? b_pos_raw : {(DIM*W){1'b0}};
 
-    // ---- the write-back lane (DEBUG) ----
+    // ---- the write-back lanes (DEBUG) ----
     generate
+        if (DEBUG && PAIR != 0) begin : g_wb2
+            reg             wb2_valid_q;
+            reg [IW-1:0]    wb2_idx_q;
+            reg [DIM*W-1:0] wb2_pos_q;
+            always @(posedge clk) begin
+                if (reset) begin
+                    wb2_valid_q <= 1'b0;
+                    wb2_idx_q   <= {IW{1'b0}};
+                    wb2_pos_q   <= {(DIM*W){1'b0}};
+                end else begin
+                    wb2_valid_q <= we2;
+                    if (we2) begin
+                        wb2_idx_q <= w2_idx;
+                        wb2_pos_q <= w2_pos;
+                    end
+                end
+            end
+            assign wb_valid[PAIR] = wb2_valid_q;
+            assign wb_idx[PAIR*IW +: IW] = wb2_idx_q;
+            assign wb_pos[PAIR*DIM*W +: DIM*W] = wb2_pos_q;
+        end else if (PAIR != 0) begin : g_no_wb2
+            assign wb_valid[PAIR] = 1'b0;
+            assign wb_idx[PAIR*IW +: IW] = {IW{1'b0}};
+            assign wb_pos[PAIR*DIM*W +: DIM*W] = {(DIM*W){1'b0}};
+        end
         if (DEBUG) begin : g_wb
             reg             wb_valid_q;
             reg [IW-1:0]    wb_idx_q;
@@ -278,13 +348,13 @@ module node_unit #(
                     end
                 end
             end
-            assign wb_valid = wb_valid_q;
-            assign wb_idx   = wb_idx_q;
-            assign wb_pos   = wb_pos_q;
+            assign wb_valid[0]        = wb_valid_q;
+            assign wb_idx[0 +: IW]    = wb_idx_q;
+            assign wb_pos[0 +: DIM*W] = wb_pos_q;
         end else begin : g_no_wb
-            assign wb_valid = 1'b0;
-            assign wb_idx   = {IW{1'b0}};
-            assign wb_pos   = {(DIM*W){1'b0}};
+            assign wb_valid[0]        = 1'b0;
+            assign wb_idx[0 +: IW]    = {IW{1'b0}};
+            assign wb_pos[0 +: DIM*W] = {(DIM*W){1'b0}};
             wire unused_wb = &{1'b0, wdata};
         end
     endgenerate

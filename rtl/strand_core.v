@@ -29,8 +29,10 @@
  * since reset, or an address past the last node).
  *
  * dbg (DEBUG = 1, for verification; else one constant bit) shows, LSB first: phase
- * [3], FV, FEC, the walk's uidx [UW], nidx [IW] and counter [CW], and per unit the
- * write-back lane: valid [M], index [M IW], x [M W], y [M W], z [M W] (z 0 in 2D).
+ * [3], FV, FEC, the walk's uidx [UW], nidx [IW] and counter [CW], and the
+ * write-back lanes, WB of them (WB = M, or 2 M with PAIR: lane u (1 + PAIR) + l shows
+ * unit u's write port l): valid [WB], index [WB IW], x [WB W], y [WB W], z [WB W] (z 0
+ * in 2D).
  * tb/sim_top.v unpacks it; the cycle model predicts all of it.
  *
  * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND, 6 GRAB; every
@@ -135,13 +137,21 @@ module strand_core #(
     reg  [UW-1:0] rd_sel_q;
     always @(posedge clk) rd_sel_q <= seq_rd[AW-1:IW];
 
-    wire [M*DW-1:0] a_pos_all, a_prev_all, a_acc_all, b_pos_all, wb_pos_all;
+    wire [M*DW-1:0] a_pos_all, a_prev_all, a_acc_all, b_pos_all;
     // the spring pass's force writes, per unit (the serial pass writes one unit at a time)
     wire [M-1:0]    acc_we_all;
     wire [M*IW-1:0] acc_idx_all;
     wire [M*DW-1:0] acc_w_all;
-    wire [M-1:0]    a_pin_all, done_all, wb_valid_all;
-    wire [M*IW-1:0] wb_idx_all;
+    wire [M-1:0]    a_pin_all, done_all;
+    // the write-back lanes (DEBUG): lane u (1 + PAIR) + l is unit u's write port l
+    localparam integer LANES = 1 + PAIR;
+    wire [WB-1:0]    wb_valid_all;
+    wire [WB*IW-1:0] wb_idx_all;
+    wire [WB*DW-1:0] wb_pos_all;
+    // PAIR: the pair reads of every unit (the pipelined constraint pass's)
+    wire [M*DW-1:0] pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all;
+    wire [M-1:0]    pair_pin_e_all, pair_pin_o_all;
+    wire unused_pair = &{1'b0, pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all, pair_pin_e_all, pair_pin_o_all};
     // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
     wire          sel_ok      = {1'b0, rd_sel_q} < M_COUNT;
     wire [DW-1:0] seq_rd_pos  = sel_ok ? a_pos_all[rd_sel_q * DW +: DW] : {DW{1'b0}};
@@ -328,7 +338,13 @@ module strand_core #(
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
                 .pin_en(pin_we && cfg_node[AW-1:IW] == U_ID), .pin_idx(cfg_node[IW-1:0]),
                 .b_idx(rd_addr[IW-1:0]), .b_pos(b_pos_all[u*DW +: DW]),
-                .wb_valid(wb_valid_all[u]), .wb_idx(wb_idx_all[u*IW +: IW]), .wb_pos(wb_pos_all[u*DW +: DW]));
+                .pair_re(1'b0), .pair_row_e({IW{1'b0}}), .pair_row_o({IW{1'b0}}),
+                .pair_pos_e(pair_pos_e_all[u*DW +: DW]), .pair_pos_o(pair_pos_o_all[u*DW +: DW]),
+                .pair_prev_e(pair_prev_e_all[u*DW +: DW]), .pair_prev_o(pair_prev_o_all[u*DW +: DW]),
+                .pair_pin_e(pair_pin_e_all[u]), .pair_pin_o(pair_pin_o_all[u]),
+                .w2_en(1'b0), .w2_idx({IW{1'b0}}), .w2_pos({DW{1'b0}}),
+                .wb_valid(wb_valid_all[u*LANES +: LANES]), .wb_idx(wb_idx_all[u*LANES*IW +: LANES*IW]),
+                .wb_pos(wb_pos_all[u*LANES*DW +: LANES*DW]));
         end
     endgenerate
     assign fv = &done_all;
@@ -357,11 +373,11 @@ module strand_core #(
             wire [UW-1:0] uidx    = in_force ? f_uidx : c_uidx;
             wire [IW-1:0] nidx    = in_force ? f_nidx : c_nidx;
             wire [CW-1:0] counter = in_force ? f_counter : c_counter;
-            wire [3*M*W-1:0] wb_xyz;  // per axis, then per unit
+            wire [3*WB*W-1:0] wb_xyz;  // per axis, then per lane
             genvar a, v;
             for (a = 0; a < 3; a = a + 1) begin : g_axis
-                for (v = 0; v < M; v = v + 1) begin : g_lane
-                    assign wb_xyz[(a*M + v)*W +: W] = a < DIM ? wb_pos_all[v*DW + (a < DIM ? a : 0)*W +: W] : {W{1'b0}};
+                for (v = 0; v < WB; v = v + 1) begin : g_lane
+                    assign wb_xyz[(a*WB + v)*W +: W] = a < DIM ? wb_pos_all[v*DW + (a < DIM ? a : 0)*W +: W] : {W{1'b0}};
                 end
             end
             assign dbg = {wb_xyz, wb_idx_all, wb_valid_all, counter, nidx, uidx, fec, fv, phase};

@@ -95,8 +95,11 @@ DERIVED = [
     ("CW", "clog2(max(M * K, max(GRAPH && EN_CONSTRAINTS ? E_RODS : 1, GRAPH && EN_SPRINGS ? E_SPRINGS : 1)) + 1)",
      "the walk's counter: nodes or edges of a pass"),
     ("SW", "clog2_1(SUBSTEPS)", "substep counter bits"),
-    ("DBG_W", "DEBUG ? 3 + 2 + UW + IW + CW + M * (1 + IW + 3 * W) : 1",
-     "the dbg port: {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} per unit lane, or 1"),
+    ("PAIR", "ARCH && !GRAPH && EN_CONSTRAINTS ? 1 : 0",
+     "a chain's pipelined constraint pass: every unit reads a pair of neighbouring nodes and writes up to two a clock, so its node memories are two banks (even and odd nodes)"),
+    ("WB", "M * (1 + PAIR)", "the write-back lanes of the dbg port: one a unit, two with PAIR (one a write port)"),
+    ("DBG_W", "DEBUG ? 3 + 2 + UW + IW + CW + WB * (1 + IW + 3 * W) : 1",
+     "the dbg port: {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} per write-back lane, or 1"),
     ("AXIL_NB", "max(12, AW + 4)", "strand_axil: the address bit of its node window (16 bytes a node)"),
     ("AXIL_AW", "AXIL_NB + 1", "strand_axil: its address bits"),
 ]

@@ -66,7 +66,7 @@ def pick(names, pattern):
 
 def layout(p, names):
     """The save file's rows: (name or None for a label, flags, label text); and the missing."""
-    m, dim = p["M"], p["DIM"]
+    m, dim, ports = p["M"], p["DIM"], 1 + p["PAIR"]
     rows, missing = [], []
 
     def sig(pattern, flags, required=True):
@@ -103,13 +103,14 @@ def layout(p, names):
         label("FSM states")
         for n in states:
             rows.append((n, DEC | RJUSTIFY, None))
-    label("write-back lanes: valid and node index of every unit (unit 0 the lowest bits)")
+    label("write-back lanes: valid and node index of every unit's write ports (unit 0 the lowest bits)")
     sig(r"TOP\.wb_valid" + num, BIN | RJUSTIFY)
     sig(r"TOP\.wb_idx" + num, HEX | RJUSTIFY)
-    for u in range(m):
-        label(f"unit {u}: the position written back")
+    for lane in range(m * ports):
+        u, port = divmod(lane, ports)
+        label(f"unit {u}: the position written back" + (f" (write port {port})" if ports > 1 else ""))
         for axis in "xyz"[:dim]:
-            sig(rf"TOP\.sim_top\.g_lane\[{u}\]\.wb_{axis}_val", RJUSTIFY)
+            sig(rf"TOP\.sim_top\.g_lane\[{lane}\]\.wb_{axis}_val", RJUSTIFY)
     return rows, missing
 
 

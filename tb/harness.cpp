@@ -229,7 +229,7 @@ bool Run::compare() {
     cyc_outputs m;
     cyc_get_outputs(&model_, &m);
     // (name, rtl, model) of every output; names are only formatted on a mismatch
-    uint64_t rtl[12 + 5 * CYC_MAX_UNITS], mod[12 + 5 * CYC_MAX_UNITS];
+    uint64_t rtl[12 + 5 * CYC_MAX_LANES], mod[12 + 5 * CYC_MAX_LANES];
     int n = 0;
     auto put = [&](uint64_t a, uint64_t b) { rtl[n] = a, mod[n++] = b; };
     put(top_->frame_done, m.frame_done);
@@ -244,7 +244,7 @@ bool Run::compare() {
     put(top_->rd_z, m.rd_z);
     put(top_->busy, m.busy);
     put(top_->irq, m.irq);
-    for (int u = 0; u < hp_.m; u++) {
+    for (int u = 0; u < hp_.wb; u++) {  // the write-back lanes
         put(lane(top_->wb_valid, u, 1), m.wb_valid[u]);
         put(lane(top_->wb_idx, u, hp_.iw), m.wb_idx[u]);
         put(lane(top_->wb_x, u, hp_.w), m.wb_x[u]);

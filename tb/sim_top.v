@@ -12,8 +12,9 @@
  * Its parameters default to the build of the params.vh that 'strand hwgen SCENE DIR'
  * writes (DEBUG = 1 there), so the harness builds exactly the effects the scene
  * names. The ports are strand_core's, plus what the dbg port carries as named
- * signals: phase, FV, FEC, the walk (uidx, nidx, counter) and each unit's
- * write-back lane (wb_*: M lanes, z 0 in 2D).
+ * signals: phase, FV, FEC, the walk (uidx, nidx, counter) and the write-back
+ * lanes (wb_*: WB lanes, one a unit, or two with PAIR: lane u (1 + PAIR) + l is unit
+ * u's write port l; z 0 in 2D).
  */
 module sim_top #(
 `include "strand_params_scene.vh"
@@ -41,11 +42,11 @@ module sim_top #(
     output wire [UW-1:0]   uidx,
     output wire [IW-1:0]   nidx,
     output wire [CW-1:0]   counter,
-    output wire [M-1:0]    wb_valid,
-    output wire [M*IW-1:0] wb_idx,
-    output wire [M*W-1:0]  wb_x,
-    output wire [M*W-1:0]  wb_y,
-    output wire [M*W-1:0]  wb_z
+    output wire [WB-1:0]    wb_valid,
+    output wire [WB*IW-1:0] wb_idx,
+    output wire [WB*W-1:0]  wb_x,
+    output wire [WB*W-1:0]  wb_y,
+    output wire [WB*W-1:0]  wb_z
 );
     `STRAND_CHECK(sim_top_needs_DEBUG, DEBUG == 1'b1, ("sim_top: the build must have DEBUG = 1 (in %m)"))
     wire [DBG_W-1:0] dbg;
@@ -74,8 +75,8 @@ module sim_top #(
     end
     genvar u;
     generate
-        for (u = 0; u < M; u = u + 1) begin : g_lane
-            real wb_x_val, wb_y_val, wb_z_val;   // unit u's write-back lane
+        for (u = 0; u < WB; u = u + 1) begin : g_lane
+            real wb_x_val, wb_y_val, wb_z_val;   // write-back lane u
             always @* begin
                 wb_x_val = $itor($signed(wb_x[u*W +: W])) / ONE;
                 wb_y_val = $itor($signed(wb_y[u*W +: W])) / ONE;

@@ -46,9 +46,9 @@ module tb_top_frames #(
     wire [UW-1:0] uidx;
     wire [IW-1:0] nidx;
     wire [CW-1:0] counter;
-    wire [M-1:0] wb_valid;
-    wire [M*IW-1:0] wb_idx;
-    wire [M*W-1:0] wb_x, wb_y, wb_z;
+    wire [WB-1:0] wb_valid;
+    wire [WB*IW-1:0] wb_idx;
+    wire [WB*W-1:0] wb_x, wb_y, wb_z;
 
     sim_top dut (
         .clk(clk), .reset(reset), .mouse_x(mouse_x), .mouse_y(mouse_y), .mouse_z(mouse_z), .mouse_down(mouse_down),
