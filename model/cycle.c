@@ -140,7 +140,7 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
     const int fec_at = c->hp.graph ? c->hp.e_rods : m * c->hp.k - (c->hp.rule ? 1 : 0);
     o->fec = c->hp.en_constraints && (c->hp.rule ? c->pair.counter : c->counter) == fec_at;
-    if (chain_streams(&c->hp) && c->hp.en_constraints) o->fec = c->st_counter == c->hp.k + 1; /* chain_stream: every slot issued */
+    if (chain_streams(&c->hp) && c->hp.en_constraints) o->fec = c->st_counter == c->hp.k / 2 + 1; /* chain_stream: every slot issued */
     if (graph_streams(&c->hp)) o->fec = c->gs_counter == c->hp.e_rods; /* graph_stream: every edge of the pass read */
     /* strand_core shows the spring pass's walk in phase FORCE, else the constraint sequencer's */
     if (c->phase == PH_FORCE && chain_streams(&c->hp)) { /* spring_stream: 0, port A's address, the slots issued */
@@ -156,10 +156,10 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
         o->uidx = (uint32_t)(c->gs_a / c->hp.k);
         o->nidx = (uint32_t)(c->gs_a % c->hp.k);
         o->counter = (uint32_t)c->gs_counter;
-    } else if (c->hp.arch) { /* chain_stream: the colour, port A's address, the slots issued */
-        int k = c->hp.k, t = c->st_t;
+    } else if (c->hp.arch) { /* chain_stream: the colour, the pair read (t - 1 at t = 1 .. PJ), the slots issued */
+        int pairs = (c->hp.k + 1) / 2, t = c->st_t;
         o->uidx = (uint32_t)c->st_colour;
-        o->nidx = !c->st_running || t > k || t == 0 ? 0u : (uint32_t)(t - 1);
+        o->nidx = !c->st_running || t > pairs || t == 0 ? 0u : (uint32_t)(t - 1);
         o->counter = (uint32_t)c->st_counter;
     } else if (c->hp.rule) {
         o->uidx = (uint32_t)c->pair.uidx;
@@ -448,19 +448,61 @@ static void stream_plan(cyc_model *c)
     stream_swap_pending(c, !colour); /* back: those writes land in their cycles */
 }
 
-/* chain_stream: the writes of stream position s (t = s + LP + 4 in its sweep) of the sweep of
-   this colour; even units stream upward, odd ones downward. */
-static void stream_write(cyc_model *c, bool *written, int colour, int s)
+/* chain_stream: the writes of slot j (in cycle j + LP + 3 of its sweep) of the sweep of this
+   colour. Even units stream upward, odd ones downward (stream position s is node s, or
+   K-1-s); slot j takes the constraint of the sweep's colour among positions 2j-1 and 2j:
+   centred, the node at 2j (when position 0 has the sweep's colour) or 2j-1, on write port 0;
+   pairwise, the link (2j, 2j+1) or (2j-1, 2j) (a link has its lower node's colour), its lower
+   node a on port 0 and its higher node b on port 1, each if it is the unit's. The nodes of
+   unit u that slot j writes (those with a result pending), and their write ports. */
+static int stream_slot_nodes(const cyc_model *c, int u, int colour, int j, int node[2], int port[2])
 {
-    const int m = c->hp.m, k = c->hp.k;
-    if (s < 0 || s >= k) return;
-    for (int u = 0; u < m; u++) {
-        int x = u % 2 ? k - 1 - s : s, node = u * k + x;
-        if (!c->st_pend[colour][node]) continue;
-        memcpy(c->s.pos[node], c->st_pos[colour][node], sizeof c->s.pos[node]);
-        c->st_pend[colour][node] = false;
-        lane_write(c, written, u, x, node);
+    const int k = c->hp.k;
+    const bool down = u % 2;
+    const int s_par = (u * k + (down ? k - 1 : 0)) % 2; /* the colour of stream position 0 */
+    int pos[2], n = 0, found = 0;
+    if (j < 0 || j > k / 2) return 0;
+    if (!c->hp.rule) {
+        pos[n++] = s_par == colour ? 2 * j : 2 * j - 1;
+    } else {
+        int q = ((down ? !s_par : s_par) == colour) ? 2 * j : 2 * j - 1; /* the link (q, q+1) */
+        pos[n++] = down ? q + 1 : q; /* a */
+        pos[n++] = down ? q : q + 1; /* b */
     }
+    for (int p = 0; p < n; p++) {
+        if (pos[p] < 0 || pos[p] >= k) continue;
+        int x = down ? k - 1 - pos[p] : pos[p];
+        if (!c->st_pend[colour][u * k + x]) continue;
+        node[found] = x;
+        port[found++] = p;
+    }
+    return found;
+}
+
+/* ... and their landing: storage and the write-back lanes */
+static void stream_write(cyc_model *c, bool *written, int colour, int j)
+{
+    for (int u = 0; u < c->hp.m; u++) {
+        int x[2], port[2], n = stream_slot_nodes(c, u, colour, j, x, port);
+        for (int i = 0; i < n; i++) {
+            int node = u * c->hp.k + x[i];
+            memcpy(c->s.pos[node], c->st_pos[colour][node], sizeof c->s.pos[node]);
+            c->st_pend[colour][node] = false;
+            lane_write_port(c, written, u, port[i], x[i], node);
+        }
+    }
+}
+
+bool cyc_stream_write_due(const cyc_model *c)
+{
+    if (!chain_streams(&c->hp) || !c->st_running) return false;
+    for (int u = 0; u < c->hp.m; u++) {
+        int x[2], port[2];
+        if (stream_slot_nodes(c, u, c->st_colour, c->st_t - 3 - c->lp, x, port) ||
+            stream_slot_nodes(c, u, !c->st_colour, c->st_t + c->st_period - 3 - c->lp, x, port))
+            return true;
+    }
+    return false;
 }
 
 /*
@@ -622,8 +664,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
        previous sweep's (SP cycles along) while this one starts. */
     if (chain_streams(hp) && c->st_running) {
         if (c->st_t == 0) stream_plan(c);
-        stream_write(c, written, c->st_colour, c->st_t - 4 - c->lp);
-        stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 4 - c->lp);
+        stream_write(c, written, c->st_colour, c->st_t - 3 - c->lp);
+        stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 3 - c->lp);
     }
     /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
     if (!hp->arch && !hp->rule && c->sq_state == SQ_NEXT) {
@@ -661,7 +703,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     if (chain_streams(hp) && hp->en_constraints) {
         const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
         const int sweep = last ? c->st_last : c->st_period;
-        const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k + 2;
+        const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k / 2 + 2; /* slots 0 .. K/2 */
         const bool sweep_end = c->st_running && c->st_t == sweep - 1;
         c->st_done = sweep_end && last;
         if (seq_start && !c->st_running) {

@@ -142,6 +142,9 @@ void cyc_free(cyc_model *c);
 void cyc_get_outputs(const cyc_model *c, cyc_outputs *out);
 /* One rising edge with these inputs. */
 void cyc_edge(cyc_model *c, const cyc_inputs *in);
+/* chain_stream: whether the coming edge lands a write of the pipelined pass (a planted
+   fault's predicted cycle). */
+bool cyc_stream_write_due(const cyc_model *c);
 /* Node i's position (raw W-bit words), as the RTL's storage holds it now. */
 uint32_t cyc_node_word(const cyc_model *c, int i, int axis);
 

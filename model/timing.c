@@ -52,20 +52,24 @@ long hw_spring_latency(const hw_params *hp)
 
 static long node_count(const hw_params *hp) { return (long)hp->m * hp->k; }
 
+/* chain_stream.v: a sweep's slots, NS = K/2 + 1 (slot j takes stream positions 2j-1 and 2j) */
+static long stream_slots(const hw_params *hp) { return hp->k / 2 + 1; }
+
 long hw_stream_period(const hw_params *hp)
 {
-    /* chain_stream.v: every unit reads its stream positions 0 .. K-1 at t = 1 .. K (even units
-       upward, odd ones downward), slots from t = 2 to K + 2; position s is written by
-       s + LP + 4. The next sweep starts when its reads follow those writes (its read of
-       position 0 at t = 1: LP + 4) and its slots this sweep's (K + 3). */
-    long k3 = hp->k + 3, lp4 = hw_toward_pipe_latency(hp) + 4;
-    return k3 > lp4 ? k3 : lp4;
+    /* chain_stream.v: every unit reads the pairs of stream positions (2j, 2j+1) at t = j + 1
+       (even units upward, odd ones downward), slots j = 0 .. NS-1 at t = j + 2; slot j's writes
+       land in cycle j + LP + 3. The next sweep starts when its reads follow those writes (its
+       read of pair j, at t = j + 1, after slot j + 1's write: LP + 4) and its slots this
+       sweep's (NS). */
+    long ns = stream_slots(hp), lp4 = hw_toward_pipe_latency(hp) + 4;
+    return ns > lp4 ? ns : lp4;
 }
 
 long hw_stream_last(const hw_params *hp)
 {
-    /* the pass's last sweep runs until its last write (position K-1, K + LP + 3) has landed */
-    return hp->k + hw_toward_pipe_latency(hp) + 4;
+    /* the pass's last sweep runs until its last write (slot NS-1's, cycle NS + LP + 2) has landed */
+    return stream_slots(hp) + hw_toward_pipe_latency(hp) + 3;
 }
 
 /* the pipelined passes: a chain's (chain_stream, spring_stream) and a graph's rods (graph_stream) */
@@ -119,7 +123,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
 {
     char pipe[128] = "", last[96] = "";
     if (chain_streams(hp) && hp->en_constraints) /* the pass's last sweep runs to its drain */
-        snprintf(last, sizeof last, "; a substep's last sweep SL = K + LP + 4 = %ld", hw_stream_last(hp));
+        snprintf(last, sizeof last, "; a substep's last sweep SL = K/2 + LP + 4 = %ld", hw_stream_last(hp));
     if (hp->arch && hp->en_constraints)
         snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
                  hp->projection ? "2 SQRT_BITS + DIV_BITS + 34" : "SQRT_BITS + DIV_BITS + 15", hw_toward_pipe_latency(hp));
@@ -135,7 +139,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     graph_streams(hp) ? "2 E_RODS + COLOURS (LP + 3) (pipelined graph)"
-                    : hp->arch        ? "2 sweeps of SP = max(K + 3, LP + 4) (pipelined)"
+                    : hp->arch        ? "2 sweeps of SP = max(K/2 + 1, LP + 4) (pipelined)"
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
                     chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",

@@ -5,7 +5,9 @@
 
 /*
  * chain_stream - the pipelined constraint pass over a chain of M x K nodes (ARCH = 1):
- * every unit streams its own nodes through its own toward_pipe, one constraint a clock.
+ * every unit streams its own nodes, two a clock, through its own distance datapath,
+ * one constraint a clock: a node of the centred rule (two distance pipes side by side,
+ * one for each neighbour) or a link of the pairwise rule (one pipe).
  *
  * Order (red/black, model/engine_body.h with order = redblack): a pass is two sweeps,
  * the even nodes (centred rule) or the links (2j, 2j+1) (pairwise), then the odd ones.
@@ -17,51 +19,51 @@
  * Directions: even units stream their nodes upward (0 .. K-1), odd units downward
  * (K-1 .. 0), so the two nodes of every unit border are taken at the same time: both
  * first (the border between an odd unit and the next) or both last (an even unit and
- * the next). In a unit's stream order (position s = the node, or K-1-node downward)
- * every node is written a fixed time after it is read, the later the further along the
- * stream, and the next sweep reads it as far along again: so the next sweep may start
- * long before this one drains. Its start waits only for the toward_pipe latency (a
- * node written LT + 4 cycles after its position's read, read again LT + 4 later at
- * the earliest) and for this sweep's slots (port A and the pipe's input are each used
- * once a cycle). The order within a colour does not change a result.
+ * the next). A unit's stream position s is node s, or node K-1-s downward. Its node
+ * memories are two banks (bank_ram: even and odd nodes), so it reads a pair of stream
+ * positions (2j, 2j+1) a clock, one from each bank, and writes up to two a clock, one
+ * to each.
  *
- * A sweep, counting its first cycle as t = 0 (every unit in step; LT is toward_pipe's
- * latency, model/timing.c hw_toward_pipe_latency):
- *   t = 1 .. K   port A reads stream position t-1 (rd_idx upward, rd_idx_down in odd
- *                units); its data arrive at t+1
- *   t = s + 2    slot s = 0 .. K: position s arrives (slot K: "after", the neighbour
- *                across the stream's end, its position K-1, held since t = K+1);
- *                position s-1 is the previous arrival (slot 0: "before", the
- *                neighbour across the stream's start, its position 0, arriving now);
- *                the slot issues at most one operation:
- *      centred:  position s of this colour: the point at rest from s-1 toward s ("up");
- *                else position s-1 of this colour: the point from s toward s-1 ("down").
- *                A node's two results leave the pipe on consecutive cycles; the second
- *                forms the node (fx_avg of both, or the one that exists), written the
- *                cycle after; a pinned (or held) node is not written.
- *      pairwise: the link between positions s-1 and s, if it has this colour (its lower
- *                node's: position s-1 upward, s downward): its excess e
- *                (toward_pipe excess mode along the chain: from the lower node a to
- *                the higher b, P and C carried along), a += e/2 and b -= e/2 (a fixed
- *                end: the other takes e; both fixed or a zero length: nothing);
- *                position s-1 is written the cycle after the result, position s the
- *                cycle after that. A link across a unit border is computed by both
- *                units alike, and each writes its own end.
- *   Position s is written in cycle s + LT + 4 at the latest. The next sweep starts at
- *   t = SP = max(K + 3, LT + 4) (its first read, t = 1, comes after position 0's write;
- *   its slots after this sweep's last, t = K + 2), so sweeps overlap by their drain;
- *   the last sweep of the pass runs to t = SL - 1, SL = K + LT + 4 (its last write lands
- *   in cycle K + LT + 3), and done is high the cycle after (2 ITER sweeps a pass:
- *   (2 ITER - 1) SP + SL cycles).
+ * A sweep, counting its first cycle as t = 0 (every unit in step; PJ = ceil(K/2) pairs,
+ * NS = floor(K/2) + 1 slots; LT is the distance pipe's latency, model/timing.c
+ * hw_toward_pipe_latency):
+ *   t = 1 .. PJ   the units read pair j = t-1 (pair_re, the rows of pair_row_*_all);
+ *                 its words (and previous positions, and pinned-or-held flags) arrive
+ *                 at t+1
+ *   t = j + 2     slot j = 0 .. NS-1 takes stream positions 2j-2 .. 2j+1: 2j and 2j+1
+ *                 arriving (pair j), 2j-2 and 2j-1 from the last slot (the window); at
+ *                 slot 0 position -1 is the "before" neighbour's position 0 (the unit
+ *                 across the stream's start, arriving now), and position K the "after"
+ *                 neighbour's position K-1 (the unit across its end: arriving at slot
+ *                 PJ-1 when K is odd, held from t = PJ+1 for slot PJ when K is even).
+ *                 The slot issues the one constraint of the sweep's colour among:
+ *      centred:  the node at position 2j or 2j-1 (which one: the unit's colour of
+ *                position 0, S_PAR, against the sweep's): the point at rest from its
+ *                neighbour at position p-1 ("up" pipe) and from the one at p+1 ("down"
+ *                pipe), both into their pipes at once. The two results leave together;
+ *                the node becomes fx_avg of both (or the one that exists) and is
+ *                written the cycle after (write port 1), unless pinned or held.
+ *      pairwise: the link (2j, 2j+1) or (2j-1, 2j), whichever has the sweep's colour
+ *                (a link has its lower node's: the lower position upward, the higher
+ *                downward): its excess e (the pipe in excess mode from the lower node a
+ *                to the higher b, P and C carried along), a += e/2 and b -= e/2 (a
+ *                fixed end: the other takes e; both fixed or a zero length: nothing);
+ *                a (write port 1) and b (write port 2) are written in the same cycle,
+ *                the cycle after the result, each if it is this unit's node. A link
+ *                across a unit border is computed by both units alike, and each writes
+ *                its own end.
+ *   Slot j's writes land in cycle j + LT + 3. The next sweep's read of pair j (cycle
+ *   SP + j + 1) follows the last write to either of its positions (slot j + 1's, in
+ *   cycle j + LT + 4) when SP >= LT + 4, and its slots follow this sweep's when
+ *   SP >= NS: the next sweep starts at t = SP = max(NS, LT + 4), so sweeps overlap by
+ *   their drain; the last sweep of the pass runs to t = SL - 1, SL = NS + LT + 3 (its
+ *   last write lands in cycle NS + LT + 2), and done is high the cycle after (2 ITER
+ *   sweeps a pass: (2 ITER - 1) SP + SL cycles).
  * Global node g = u K + x has colour g mod 2; the chain's end nodes have one neighbour
  * (the operation runs and its result is dropped), so every sweep takes the same time.
  *
- * Observation (DEBUG): uidx is the sweep's colour, nidx port A's upward address,
- * counter the slots issued in this sweep (0 .. K+1), FEC = every slot issued.
- *
- * Ports: port A of the even units at rd_idx, of the odd units at rd_idx_down (data the
- * next cycle, per unit in rd_pos_all, rd_pin_all: pinned or held); one write per unit
- * per cycle at most (wr_en[u], wr_idx_all, wr_pos_all).
+ * Observation (DEBUG): uidx is the sweep's colour, nidx the pair read (j, while the
+ * units read), counter the slots issued in this sweep (0 .. NS), FEC = every slot issued.
  */
 module chain_stream #(
 `include "strand_params.vh"
@@ -72,45 +74,58 @@ module chain_stream #(
     output reg              done,       // one-cycle pulse after the last pass
     input  wire [W-1:0]     rest_len,
 
-    output reg  [IW-1:0]    rd_idx,     // port A address of the even units (upward)
-    output reg  [IW-1:0]    rd_idx_down, //   and of the odd ones (downward)
-    input  wire [M*DIM*W-1:0] rd_pos_all,
-    input  wire [M-1:0]     rd_pin_all,
-    input  wire [M*DIM*W-1:0] rd_prev_all, // PROJECTION: the previous positions, read with them
+    output wire             pair_re,          // the units read a pair now: the even bank's
+    output wire [M*IW-1:0]  pair_row_e_all,   //   row and the odd bank's, per unit
+    output wire [M*IW-1:0]  pair_row_o_all,
+    input  wire [M*DIM*W-1:0] pair_pos_e_all, // the cycle after, per unit: the two words,
+    input  wire [M*DIM*W-1:0] pair_pos_o_all,
+    input  wire [M*DIM*W-1:0] pair_prev_e_all, //  their previous positions (PROJECTION)
+    input  wire [M*DIM*W-1:0] pair_prev_o_all,
+    input  wire [M-1:0]     pair_pin_e_all,   //   and whether each is pinned or held
+    input  wire [M-1:0]     pair_pin_o_all,
 
-    output wire [M-1:0]     wr_en,
-    output wire [M*IW-1:0]  wr_idx_all,
+    output wire [M-1:0]     wr_en,      // write port 1, per unit: the node (centred), or
+    output wire [M*IW-1:0]  wr_idx_all, //   the link's lower node a (pairwise)
     output wire [M*DIM*W-1:0] wr_pos_all,
+    output wire [M-1:0]     wr2_en,     // write port 2 (pairwise): the link's higher node b
+    output wire [M*IW-1:0]  wr2_idx_all,
+    output wire [M*DIM*W-1:0] wr2_pos_all,
 
     output wire [UW-1:0]    uidx,       // observation: the colour
-    output wire [IW-1:0]    nidx,       //   port A's address
+    output wire [IW-1:0]    nidx,       //   the pair read
     output reg  [CW-1:0]    counter,    //   slots issued in this sweep
     output wire             fec         //   every slot of the sweep issued
 );
 
     localparam integer DW     = DIM * W;
+    localparam integer NB     = 2 * DW + 1;                    // a node's bundle: {pin, prev, pos}
     localparam integer LT     = PROJECTION ? 2 * SQRT_BITS + DIV_BITS + 34   // toward_prev_pipe's latency
                                            : SQRT_BITS + DIV_BITS + 15;      // toward_pipe's
-    localparam integer SP     = K + 3 > LT + 4 ? K + 3 : LT + 4; // a sweep's cycles before the next
-    localparam integer SL     = K + LT + 4;                    // the last sweep's, to its last write
+    localparam integer PJ     = (K + 1) / 2;                   // pairs read a sweep
+    localparam integer NS     = K / 2 + 1;                     // slots a sweep
+    localparam [0:0]   K_EVEN = K % 2 == 0;
+    localparam integer SP     = NS > LT + 4 ? NS : LT + 4;     // a sweep's cycles before the next
+    localparam integer SL     = NS + LT + 3;                   // the last sweep's, to its last write
     localparam integer TW     = $clog2(SL + 1);
-    localparam integer XW     = IW + 1;                        // a slot number, 0 .. K
+    localparam integer XW     = IW + 1;                        // a slot number, 0 .. NS-1
+    localparam integer PW     = IW + 2;                        // a stream position or node, -1 .. K
     localparam integer ITW    = ITER > 1 ? $clog2(ITER) : 1;
-    localparam integer TAG_W  = XW + 4;                      // s, down, exists, a's pin, b's pin
-    localparam integer SP_LAST_I = SP - 1, SL_LAST_I = SL - 1, K_I = K, K1_I = K + 1, K2_I = K + 2;
-    localparam integer ITER_LAST_I = ITER - 1;
+    localparam integer TAG_W  = XW + 4;                        // j, odd, exists, a's pin, b's pin
+    localparam integer SP_LAST_I = SP - 1, SL_LAST_I = SL - 1, PJ_I = PJ, PJ1_I = PJ + 1, NS1_I = NS + 1;
+    localparam integer ITER_LAST_I = ITER - 1, K_LAST_I = K - 1, K_HALF_I = K / 2, LAST_ODD_I = (K - 1) / 2;
     localparam [TW-1:0]  SP_LAST = SP_LAST_I[TW-1:0];
     localparam [TW-1:0]  SL_LAST = SL_LAST_I[TW-1:0];
-    localparam [TW-1:0]  T_K     = K_I[TW-1:0];
-    localparam [TW-1:0]  T_K1    = K1_I[TW-1:0];
-    localparam [TW-1:0]  T_K2    = K2_I[TW-1:0];
-    localparam [XW-1:0]  X_K     = K_I[XW-1:0];
-    localparam [CW-1:0]  SLOTS   = K1_I[CW-1:0];
+    localparam [TW-1:0]  T_PJ    = PJ_I[TW-1:0];
+    localparam [TW-1:0]  T_PJ1   = PJ1_I[TW-1:0];
+    localparam [TW-1:0]  T_NS1   = NS1_I[TW-1:0];
+    localparam [CW-1:0]  SLOTS   = NS[CW-1:0];
     localparam [ITW-1:0] ITER_LAST = ITER_LAST_I[ITW-1:0];
-    localparam integer   K_LAST_I = K - 1;
-    localparam [IW-1:0]  K_LAST  = K_LAST_I[IW-1:0];
+    localparam [XW-1:0]  J_HALF  = K_HALF_I[XW-1:0];           // slot K/2: position 2j = K (K even)
+    localparam [XW-1:0]  J_LAST_ODD = LAST_ODD_I[XW-1:0];      // slot (K-1)/2: position 2j+1 = K (K odd)
+    localparam [PW-1:0]  P_K_LAST = K_LAST_I[PW-1:0];
 
-    `STRAND_CHECK(chain_stream_CW, (1 << CW) > K + 1, ("chain_stream: CW=%0d cannot count K+1=%0d slots in %m", CW, K + 1))
+    `STRAND_CHECK(chain_stream_CW, (1 << CW) > NS, ("chain_stream: CW=%0d cannot count NS=%0d slots in %m", CW, NS))
+    `STRAND_CHECK(chain_stream_PAIR, PAIR == 1, ("chain_stream: the build must have PAIR = 1 (banked node memories) in %m"))
 
     // ---- the sweeps ----
     reg           running;
@@ -119,14 +134,17 @@ module chain_stream #(
     reg [ITW-1:0] iter_q;
     wire          last      = colour && iter_q == ITER_LAST;  // the pass's last sweep
     wire          sweep_end = running && t == (last ? SL_LAST : SP_LAST);
-    wire          slot = running && t >= 2 && t <= T_K2;  // slot s = t - 2 is issued
+    wire          slot      = running && t >= 2 && t <= T_NS1;  // slot j = t - 2 is issued
+    wire          reading   = running && t >= 1 && t <= T_PJ;   // pair t - 1 is read
+    wire          take_after = K_EVEN && running && t == T_PJ1; // the neighbours' last pair arrives
     localparam [TW-1:0] T_TWO = 2;
     /* verilator lint_off UNUSEDSIGNAL */
-    // a slot number needs the low bits only
+    // a slot or pair number needs the low bits only
     wire [TW-1:0] t_minus_2 = t - T_TWO;
+    wire [TW-1:0] t_minus_1 = t - 1'b1;
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [XW-1:0] x = t_minus_2[XW-1:0];
-    wire          take_after = running && t == T_K1;  // the neighbour's position K-1 arrives
+    wire [XW-1:0] j  = t_minus_2[XW-1:0];
+    wire [IW-1:0] jr = reading ? t_minus_1[IW-1:0] : {IW{1'b0}};
 
     always @(posedge clk) begin
         if (reset) begin
@@ -157,27 +175,50 @@ module chain_stream #(
         end
     end
 
-    // port A: stream positions 0 .. K-1 at t = 1 .. K (upward in even units, downward in odd)
-    /* verilator lint_off UNUSEDSIGNAL */
-    // an address needs the low bits only
-    wire [TW-1:0] t_minus_1 = t - 1'b1;
-    /* verilator lint_on UNUSEDSIGNAL */
-    always @* begin
-        if (!running || t == {TW{1'b0}} || t > T_K) begin
-            rd_idx      = {IW{1'b0}};
-            rd_idx_down = {IW{1'b0}};
-        end else begin
-            rd_idx      = t_minus_1[IW-1:0];
-            rd_idx_down = K_LAST - t_minus_1[IW-1:0];
-        end
-    end
-
+    assign pair_re = reading;
     assign uidx = {{(UW-1){1'b0}}, colour};
-    assign nidx = rd_idx;
+    assign nidx = jr;
     assign fec  = counter == SLOTS;
 
-    // ---- the units ----
+    // where slot j stands at the stream's ends
+    wire at_first    = j == {XW{1'b0}};
+    wire at_last_even = K_EVEN && j == J_HALF;      // position 2j is K: no own node there
+    wire at_last_odd  = !K_EVEN && j == J_LAST_ODD; // position 2j+1 is K
+
+    // ---- every unit's arrivals: stream positions 2j (arr0) and 2j+1 (arr1), as bundles ----
+    wire [M*NB-1:0] arr0_all, arr1_all;
     genvar u;
+    generate
+        for (u = 0; u < M; u = u + 1) begin : g_rows
+            localparam [0:0] DOWN = u % 2 == 1;
+            wire [NB-1:0] own_e = {pair_pin_e_all[u], pair_prev_e_all[u*DW +: DW], pair_pos_e_all[u*DW +: DW]};
+            wire [NB-1:0] own_o = {pair_pin_o_all[u], pair_prev_o_all[u*DW +: DW], pair_pos_o_all[u*DW +: DW]};
+            if (!DOWN) begin : g_up          // positions 2j, 2j+1: nodes 2j (even), 2j+1 (odd), row j
+                assign pair_row_e_all[u*IW +: IW] = jr;
+                assign pair_row_o_all[u*IW +: IW] = jr;
+                assign arr0_all[u*NB +: NB] = own_e;
+                assign arr1_all[u*NB +: NB] = own_o;
+            end else if (K_EVEN) begin : g_down_even  // nodes K-1-2j (odd), K-2-2j (even), row K/2-1-j
+                localparam integer TOP_I = K / 2 - 1;
+                localparam [IW-1:0] TOP = TOP_I[IW-1:0];
+                wire [IW-1:0] row = reading ? TOP - jr : {IW{1'b0}};
+                assign pair_row_e_all[u*IW +: IW] = row;
+                assign pair_row_o_all[u*IW +: IW] = row;
+                assign arr0_all[u*NB +: NB] = own_o;
+                assign arr1_all[u*NB +: NB] = own_e;
+            end else begin : g_down_odd      // nodes K-1-2j (even, row (K-1)/2-j), K-2-2j (odd, row (K-3)/2-j)
+                localparam integer TOP_E_I = (K - 1) / 2, TOP_O_I = K >= 3 ? (K - 3) / 2 : 0;
+                localparam [IW-1:0] TOP_E = TOP_E_I[IW-1:0], TOP_O = TOP_O_I[IW-1:0];
+                // the last pair has no odd node (K-2-2j = -1): row 0, its word unused
+                assign pair_row_e_all[u*IW +: IW] = reading ? TOP_E - jr : {IW{1'b0}};
+                assign pair_row_o_all[u*IW +: IW] = reading && K >= 3 && jr <= TOP_O ? TOP_O - jr : {IW{1'b0}};
+                assign arr0_all[u*NB +: NB] = own_e;
+                assign arr1_all[u*NB +: NB] = own_o;
+            end
+        end
+    endgenerate
+
+    // ---- the units ----
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [0:0] DOWN  = u % 2 == 1;       // the unit streams K-1 .. 0
@@ -192,132 +233,119 @@ module chain_stream #(
             localparam integer BEFORE_I = HAS_BEFORE ? BEFORE_U : u;  // (an index in range)
             localparam integer AFTER_I  = HAS_AFTER ? AFTER_U : u;
 
-            wire [DW-1:0] own     = rd_pos_all[u*DW +: DW];
-            wire [DW-1:0] own_pv  = rd_prev_all[u*DW +: DW];
-            wire          own_pin = rd_pin_all[u];
-            // nb_first: the neighbour's position 0, read with ours (slot 0 only)
-            wire [DW-1:0] nb_first     = HAS_BEFORE ? rd_pos_all[BEFORE_I*DW +: DW] : {DW{1'b0}};
-            wire [DW-1:0] nb_first_pv  = HAS_BEFORE ? rd_prev_all[BEFORE_I*DW +: DW] : {DW{1'b0}};
-            wire          nb_first_pin = HAS_BEFORE && rd_pin_all[BEFORE_I];
-            reg  [DW-1:0] after_q, prev_q;
-            reg  [DW-1:0] after_pv, prev_pv;               // their previous positions (PROJECTION)
-            reg           after_pin, prev_pin;
-            wire          at_k    = x == X_K;
-            wire          at_0    = x == {XW{1'b0}};
-            wire [DW-1:0] arr     = at_k ? after_q : own;       // position s
-            wire [DW-1:0] arr_pv  = at_k ? after_pv : own_pv;
-            wire          arr_pin = at_k ? after_pin : own_pin;
-            wire [DW-1:0] prv     = at_0 ? nb_first : prev_q;     // position s-1
-            wire [DW-1:0] prv_pv  = at_0 ? nb_first_pv : prev_pv;
-            wire          prv_pin = at_0 ? nb_first_pin : prev_pin;
-            wire          col_x   = S_PAR ^ x[0];               // colour of position s
-            always @(posedge clk) begin
-                if (take_after) begin
-                    after_q   <= HAS_AFTER ? rd_pos_all[AFTER_I*DW +: DW] : {DW{1'b0}};
-                    after_pv  <= HAS_AFTER ? rd_prev_all[AFTER_I*DW +: DW] : {DW{1'b0}};
-                    after_pin <= HAS_AFTER && rd_pin_all[AFTER_I];
-                end
-                if (slot) begin
-                    prev_q   <= arr;
-                    prev_pv  <= arr_pv;
-                    prev_pin <= arr_pin;
-                end
+            // position -1 (slot 0) and position K (the last slot)
+            wire [NB-1:0] nb_before = HAS_BEFORE ? arr0_all[BEFORE_I*NB +: NB] : {NB{1'b0}};
+            wire [NB-1:0] nb_after;
+            if (K_EVEN) begin : g_after_held   // the neighbour's position K-1 is its last pair's second
+                reg [NB-1:0] after_q;
+                always @(posedge clk) if (take_after) after_q <= HAS_AFTER ? arr1_all[AFTER_I*NB +: NB] : {NB{1'b0}};
+                assign nb_after = after_q;
+            end else begin : g_after_live      // ... its last pair's first, arriving with ours
+                assign nb_after = HAS_AFTER ? arr0_all[AFTER_I*NB +: NB] : {NB{1'b0}};
+                wire unused_take = &{1'b0, take_after};
             end
 
-            // the operation of slot s (x)
-            reg           op_valid, op_down, op_exists, op_pin_a, op_pin_b;
-            reg [DW-1:0]  op_p, op_c, op_pp, op_pc;  // P, C and their previous positions
-            always @* begin
-                op_down   = 1'b0;
-                op_pin_a  = prv_pin;
-                op_pin_b  = arr_pin;
-                if (RULE == 0) begin
-                    if (col_x == colour) begin            // up: position s from s-1 (none at slot K)
-                        op_valid  = slot && !at_k;
-                        op_p      = prv;
-                        op_c      = arr;
-                        op_pp     = prv_pv;
-                        op_pc     = arr_pv;
-                        op_exists = !(!HAS_BEFORE && at_0);
-                        op_pin_b  = arr_pin;              // the node's pin
-                    end else begin                        // down: position s-1 from s
-                        op_valid  = slot && !at_0;
-                        op_down   = 1'b1;
-                        op_p      = arr;
-                        op_c      = prv;
-                        op_pp     = arr_pv;
-                        op_pc     = prv_pv;
-                        op_exists = !(!HAS_AFTER && at_k);
-                        op_pin_b  = prv_pin;
-                    end
-                end else begin                            // the link (s-1, s), from its lower node a
-                    // a link has its lower node's colour: position s-1 upward, s downward
-                    op_valid  = slot && (DOWN ? col_x == colour : col_x != colour);
-                    op_p      = DOWN ? arr : prv;
-                    op_c      = DOWN ? prv : arr;
-                    op_pp     = DOWN ? arr_pv : prv_pv;
-                    op_pc     = DOWN ? prv_pv : arr_pv;
-                    op_pin_a  = DOWN ? arr_pin : prv_pin;
-                    op_pin_b  = DOWN ? prv_pin : arr_pin;
-                    op_exists = !(!HAS_BEFORE && at_0) && !(!HAS_AFTER && at_k);
-                end
-            end
+            // the window (position 2j-1; the centred rule also keeps 2j-2) and the slot's positions
+            reg  [NB-1:0] w1_q;
+            wire [NB-1:0] p_m1 = at_first ? nb_before : w1_q;                         // 2j-1
+            wire [NB-1:0] p_0  = at_last_even ? nb_after : arr0_all[u*NB +: NB];      // 2j
+            wire [NB-1:0] p_1  = at_last_odd ? nb_after : arr1_all[u*NB +: NB];       // 2j+1
+            always @(posedge clk) if (slot) w1_q <= p_1;
 
-            wire             o_valid, o_ok;
-            wire [DW-1:0]    o_t, o_p, o_c;
-            wire [TAG_W-1:0] o_tag;
-            if (PROJECTION) begin : g_previous
-                toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
-                                   .CARRY(RULE == 1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
-                    .clk(clk), .reset(reset), .in_valid(op_valid), .in_excess(RULE == 1),
-                    .in_p(op_p), .in_c(op_c), .in_pp(op_pp), .in_pc(op_pc), .in_rest(rest_len),
-                    .in_tag({x, op_down, op_exists, op_pin_a && RULE == 1, op_pin_b}),
-                    .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
-            end else begin : g_current
-                toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
-                              .CARRY(RULE == 1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
-                    .clk(clk), .reset(reset), .in_valid(op_valid), .in_excess(RULE == 1),
-                    .in_p(op_p), .in_c(op_c), .in_rest(rest_len), .in_tag({x, op_down, op_exists, op_pin_a && RULE == 1, op_pin_b}),
-                    .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
-                wire unused_prev = &{1'b0, op_pp, op_pc};
-            end
-            wire [XW-1:0] o_x      = o_tag[TAG_W-1 -: XW];
-            wire          o_down   = o_tag[3];
-            wire          o_exists = o_tag[2];
-            wire          o_pin_a  = o_tag[1];
-            wire          o_pin_b  = o_tag[0];
-            wire          ok       = o_valid && o_ok && o_exists;
+            wire [PW-1:0] j_p = {1'b0, j};  // slot number as a position-wide value
+            wire [XW-1:0] o_j;              // the result's slot and its parity (position 2j - odd)
+            wire          o_odd;
             /* verilator lint_off UNUSEDSIGNAL */
-            // node indices need the low bits only (positions s-1 and s are < K where written)
-            wire [XW-1:0] o_x_m1   = o_x - 1'b1;
-            wire [XW-1:0] o_x_up   = X_K - o_x;                 // K - s: position s-1 downward
-            wire [XW-1:0] o_x_dn   = X_K - 1'b1 - o_x;          // K-1-s: position s downward
+            // a node index needs the low bits only (the positions written are 0 .. K-1)
+            wire [PW-1:0] o_j_p   = {1'b0, o_j};
+            wire [PW-1:0] o_pos   = (o_j_p << 1) - {{(PW-1){1'b0}}, o_odd};   // 2j - odd
+            wire [PW-1:0] o_pos1  = o_pos + 1'b1;
+            wire [PW-1:0] o_node  = DOWN ? P_K_LAST - o_pos : o_pos;          // the node at position 2j - odd
+            wire [PW-1:0] o_node1 = DOWN ? P_K_LAST - o_pos1 : o_pos1;        //   and at the one after it
             /* verilator lint_on UNUSEDSIGNAL */
-            wire [IW-1:0] node_s_m1 = DOWN ? o_x_up[IW-1:0] : o_x_m1[IW-1:0];  // the node at position s-1
+            wire unused_j = &{1'b0, j_p};
 
-            reg           wr_en_q;
-            reg [IW-1:0]  wr_idx_q;
-            reg [DW-1:0]  wr_pos_q;
+            reg           wr_en_q, wr2_en_q;
+            reg [IW-1:0]  wr_idx_q, wr2_idx_q;
+            reg [DW-1:0]  wr_pos_q, wr2_pos_q;
             genvar k;
             if (RULE == 0) begin : g_centred
-                reg          up_ok;
-                reg [DW-1:0] up_t;
+                reg  [NB-1:0] w0_q;
+                wire [NB-1:0] p_m2 = w0_q;                                         // 2j-2
+                always @(posedge clk) if (slot) w0_q <= p_0;
+                // the node at p = 2j (its colour is position 0's) or p = 2j-1, and its neighbours
+                wire          even_p  = S_PAR == colour;
+                wire [NB-1:0] node    = even_p ? p_0  : p_m1;
+                wire [NB-1:0] nb_up   = even_p ? p_m1 : p_m2;   // position p-1
+                wire [NB-1:0] nb_dn   = even_p ? p_1  : p_0;    // position p+1
+                wire          valid   = slot && (even_p ? !at_last_even : !at_first);
+                wire          up_ex   = !(even_p && at_first && !HAS_BEFORE);
+                wire          dn_ex   = even_p ? !(at_last_odd && !HAS_AFTER) : !(at_last_even && !HAS_AFTER);
+                wire          pin     = node[NB-1];
+                wire             u_valid, u_ok, d_valid, d_ok;
+                wire [DW-1:0]    u_t, d_t;
+                wire [TAG_W-1:0] u_tag, d_tag;
+                /* verilator lint_off PINCONNECTEMPTY */
+                // the centred rule's points: nothing is carried
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                            .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_up (
+                    .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
+                    .in_p(nb_up[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_up[DW +: DW]), .in_pc(node[DW +: DW]),
+                    .in_rest(rest_len), .in_tag({j, !even_p, up_ex, 1'b0, pin}),
+                    .out_valid(u_valid), .out_t(u_t), .out_ok(u_ok), .out_tag(u_tag), .out_p(), .out_c());
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                            .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_down (
+                    .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
+                    .in_p(nb_dn[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_dn[DW +: DW]), .in_pc(node[DW +: DW]),
+                    .in_rest(rest_len), .in_tag({j, !even_p, dn_ex, 1'b0, pin}),
+                    .out_valid(d_valid), .out_t(d_t), .out_ok(d_ok), .out_tag(d_tag), .out_p(), .out_c());
+                /* verilator lint_on PINCONNECTEMPTY */
+                assign o_j   = u_tag[TAG_W-1 -: XW];
+                assign o_odd = u_tag[3];
+                wire up_ok = u_valid && u_ok && u_tag[2];
+                wire dn_ok = d_valid && d_ok && d_tag[2];
                 wire [DW-1:0] avg;
                 for (k = 0; k < DIM; k = k + 1) begin : g_lane
-                    fx_avg #(.W(W)) u_avg (.a(up_t[k*W +: W]), .b(o_t[k*W +: W]), .y(avg[k*W +: W]));
+                    fx_avg #(.W(W)) u_avg (.a(u_t[k*W +: W]), .b(d_t[k*W +: W]), .y(avg[k*W +: W]));
                 end
                 always @(posedge clk) begin
-                    if (o_valid && !o_down) begin
-                        up_t  <= o_t;
-                        up_ok <= ok;
-                    end
-                    wr_idx_q <= node_s_m1;
-                    wr_pos_q <= up_ok && ok ? avg : up_ok ? up_t : o_t;
+                    wr_idx_q <= o_node[IW-1:0];
+                    wr_pos_q <= up_ok && dn_ok ? avg : up_ok ? u_t : d_t;
                     if (reset) wr_en_q <= 1'b0;
-                    else wr_en_q <= o_valid && o_down && (up_ok || ok) && !o_pin_b;
+                    else wr_en_q <= u_valid && (up_ok || dn_ok) && !u_tag[0];
+                    wr2_en_q  <= 1'b0;
+                    wr2_idx_q <= {IW{1'b0}};
+                    wr2_pos_q <= {DW{1'b0}};
                 end
-                wire unused_c = &{1'b0, o_pin_a, o_p, o_c};
+                // the neighbours' pins do not matter to the centred rule; the down pipe's tag repeats the up one's
+                wire unused_c = &{1'b0, nb_up[NB-1], nb_dn[NB-1], u_tag[1], d_tag[TAG_W-1:3], d_tag[1:0], o_node1};
             end else begin : g_pairwise
+                // the link (2j, 2j+1) or (2j-1, 2j): its lower node a and higher b
+                wire          even_q = (DOWN ? !S_PAR : S_PAR) == colour;
+                wire [NB-1:0] lo     = even_q ? p_0 : p_m1;     // position q
+                wire [NB-1:0] hi     = even_q ? p_1 : p_0;      // position q+1
+                wire [NB-1:0] a      = DOWN ? hi : lo;
+                wire [NB-1:0] b      = DOWN ? lo : hi;
+                wire          valid  = slot && (even_q ? !at_last_even : 1'b1);
+                wire          exists = even_q ? !(at_last_odd && !HAS_AFTER)
+                                              : !(at_first && !HAS_BEFORE) && !(at_last_even && !HAS_AFTER);
+                wire             o_valid, o_ok;
+                wire [DW-1:0]    o_t, o_p, o_c;
+                wire [TAG_W-1:0] o_tag;
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                            .CARRY(1'b1), .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
+                    .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b1),
+                    .in_p(a[0 +: DW]), .in_c(b[0 +: DW]), .in_pp(a[DW +: DW]), .in_pc(b[DW +: DW]),
+                    .in_rest(rest_len), .in_tag({j, !even_q, exists, a[NB-1], b[NB-1]}),
+                    .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
+                assign o_j   = o_tag[TAG_W-1 -: XW];
+                assign o_odd = o_tag[3];
+                wire o_pin_a = o_tag[1];
+                wire o_pin_b = o_tag[0];
+                wire ok = o_valid && o_ok && o_tag[2];
+                // which ends are this unit's: position q = 2j - odd from 0, q + 1 up to K-1
+                wire lo_ours = !(o_odd && o_j == {XW{1'b0}});
+                wire hi_ours = o_odd ? !(K_EVEN && o_j == J_HALF) : !(!K_EVEN && o_j == J_LAST_ODD);
                 wire [DW-1:0] half, new_a, new_b;
                 /* verilator lint_off PINCONNECTEMPTY */
                 // saturation flags: the saturated value is the result
@@ -329,42 +357,27 @@ module chain_stream #(
                                                   .b(o_pin_a ? o_t[k*W +: W] : half[k*W +: W]), .y(new_b[k*W +: W]), .sat());
                 end
                 /* verilator lint_on PINCONNECTEMPTY */
-                // position s-1 is written first, position s waits a cycle: results come every
-                // other cycle, so the write port is free then. Upward a is at s-1, downward at s.
-                wire [IW-1:0] node_s   = DOWN ? o_x_dn[IW-1:0] : o_x[IW-1:0];  // the node at position s
-                wire [DW-1:0] new_s_m1 = DOWN ? new_b : new_a;
-                wire [DW-1:0] new_s    = DOWN ? new_a : new_b;
-                wire          pin_s_m1 = DOWN ? o_pin_b : o_pin_a;
-                wire          pin_s    = DOWN ? o_pin_a : o_pin_b;
-                reg          b_en;
-                reg [IW-1:0] b_idx;
-                reg [DW-1:0] b_pos;
                 always @(posedge clk) begin
-                    if (o_valid) begin
-                        wr_idx_q <= node_s_m1;
-                        wr_pos_q <= new_s_m1;
-                        b_idx    <= node_s;
-                        b_pos    <= new_s;
-                    end else begin
-                        wr_idx_q <= b_idx;
-                        wr_pos_q <= b_pos;
-                    end
+                    // a is at position q upward, q + 1 downward
+                    wr_idx_q  <= DOWN ? o_node1[IW-1:0] : o_node[IW-1:0];
+                    wr_pos_q  <= new_a;
+                    wr2_idx_q <= DOWN ? o_node[IW-1:0] : o_node1[IW-1:0];
+                    wr2_pos_q <= new_b;
                     if (reset) begin
-                        wr_en_q <= 1'b0;
-                        b_en    <= 1'b0;
-                    end else if (o_valid) begin
-                        wr_en_q <= ok && !pin_s_m1 && o_x != {XW{1'b0}};   // position s-1 is this unit's from s = 1
-                        b_en    <= ok && !pin_s && o_x != X_K;             // position s up to s = K-1
+                        wr_en_q  <= 1'b0;
+                        wr2_en_q <= 1'b0;
                     end else begin
-                        wr_en_q <= b_en;
-                        b_en    <= 1'b0;
+                        wr_en_q  <= ok && !o_pin_a && (DOWN ? hi_ours : lo_ours);
+                        wr2_en_q <= ok && !o_pin_b && (DOWN ? lo_ours : hi_ours);
                     end
                 end
-                wire unused_down = &{1'b0, o_down};
             end
-            assign wr_en[u] = wr_en_q;
-            assign wr_idx_all[u*IW +: IW] = wr_idx_q;
-            assign wr_pos_all[u*DW +: DW] = wr_pos_q;
+            assign wr_en[u]  = wr_en_q;
+            assign wr2_en[u] = wr2_en_q;
+            assign wr_idx_all[u*IW +: IW]  = wr_idx_q;
+            assign wr2_idx_all[u*IW +: IW] = wr2_idx_q;
+            assign wr_pos_all[u*DW +: DW]  = wr_pos_q;
+            assign wr2_pos_all[u*DW +: DW] = wr2_pos_q;
         end
     endgenerate
 

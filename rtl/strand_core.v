@@ -124,7 +124,6 @@ module strand_core #(
     // ---- port A of the units: one reader at a time (the scan, the spring pass, the
     // constraint sequencer); the data of unit rd_sel_q arrive the cycle after ----
     wire [AW-1:0] c_rd, c_wr, f_rd, f_wr, scan_addr;
-    wire [IW-1:0] c_rd_down;  // chain_stream: port A of the odd units, which stream downward
     wire          c_wr_en, f_wr_en;
     wire [DW-1:0] c_wr_pos, f_wr_pos;
     wire [UW-1:0] c_uidx, f_uidx;
@@ -151,6 +150,7 @@ module strand_core #(
     // PAIR: the pair reads of every unit (the pipelined constraint pass's)
     wire [M*DW-1:0] pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all;
     wire [M-1:0]    pair_pin_e_all, pair_pin_o_all;
+    // (every other build)
     wire unused_pair = &{1'b0, pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all, pair_pin_e_all, pair_pin_o_all};
     // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
     wire          sel_ok      = {1'b0, rd_sel_q} < M_COUNT;
@@ -164,6 +164,12 @@ module strand_core #(
     wire [M-1:0]    seq_we;
     wire [M*IW-1:0] seq_widx;
     wire [M*DW-1:0] seq_wpos;
+    // PAIR: the pipelined pass's pair reads and second writes (the link's other end)
+    wire            pair_re;
+    wire [M*IW-1:0] pair_row_e_all, pair_row_o_all;
+    wire [M-1:0]    seq2_we;
+    wire [M*IW-1:0] seq2_widx;
+    wire [M*DW-1:0] seq2_wpos;
     genvar u;
     /* verilator lint_off PINCONNECTEMPTY */
     // the spring pass's FEC is not an output (FEC is the constraint pass's)
@@ -178,18 +184,21 @@ module strand_core #(
                 .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}),
                 .wr_en(c_wr_en), .wr_addr(c_wr), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
-            assign c_rd_down = {IW{1'b0}};
             wire unused_rest = &{1'b0, rest_len};  // a graph's edges have their own
         end else if (EN_CONSTRAINTS && ARCH) begin : g_stream
             chain_stream #(
 `include "strand_params_pass.vh"
             ) u_seq (
                 .clk(clk), .reset(reset), .start(seq_start), .done(seq_done), .rest_len(rest_len),
-                .rd_idx(c_rd[IW-1:0]), .rd_idx_down(c_rd_down), .rd_pos_all(a_pos_all), .rd_pin_all(a_pin_all),
-                .rd_prev_all(PROJECTION ? a_prev_all : {(M*DW){1'b0}}),
+                .pair_re(pair_re), .pair_row_e_all(pair_row_e_all), .pair_row_o_all(pair_row_o_all),
+                .pair_pos_e_all(pair_pos_e_all), .pair_pos_o_all(pair_pos_o_all),
+                .pair_prev_e_all(PROJECTION ? pair_prev_e_all : {(M*DW){1'b0}}),
+                .pair_prev_o_all(PROJECTION ? pair_prev_o_all : {(M*DW){1'b0}}),
+                .pair_pin_e_all(pair_pin_e_all), .pair_pin_o_all(pair_pin_o_all),
                 .wr_en(seq_we), .wr_idx_all(seq_widx), .wr_pos_all(seq_wpos),
+                .wr2_en(seq2_we), .wr2_idx_all(seq2_widx), .wr2_pos_all(seq2_wpos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
-            assign c_rd[AW-1:IW] = {UW{1'b0}};
+            assign c_rd     = {AW{1'b0}};  // the pass reads pairs, not port A
             assign c_wr     = {AW{1'b0}};  // the units' writes are seq_*
             assign c_wr_en  = 1'b0;
             assign c_wr_pos = {DW{1'b0}};
@@ -203,7 +212,6 @@ module strand_core #(
                 .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}),  // (a kept port would keep its mux)
                 .wr_en(c_wr_en), .wr_uidx(c_wr[AW-1:IW]), .wr_nidx(c_wr[IW-1:0]), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
-            assign c_rd_down = {IW{1'b0}};
         end else if (EN_CONSTRAINTS) begin : g_pairwise
             pair_sequencer #(
 `include "strand_params_pass.vh"
@@ -215,10 +223,8 @@ module strand_core #(
                 .rd_prev(PROJECTION ? seq_rd_prev : {DW{1'b0}}), .rd_acc({DW{1'b0}}),  // previous positions: PROJECTION only
                 .wr_en(c_wr_en), .wr_uidx(c_wr[AW-1:IW]), .wr_nidx(c_wr[IW-1:0]), .wr_pos(c_wr_pos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
-            assign c_rd_down = {IW{1'b0}};
         end else begin : g_no_constraints
             assign seq_done  = 1'b0;
-            assign c_rd_down = {IW{1'b0}};
             assign c_rd      = {AW{1'b0}};
             assign c_wr      = {AW{1'b0}};
             assign c_wr_en   = 1'b0;
@@ -285,6 +291,12 @@ module strand_core #(
                 assign seq_widx[u*IW +: IW]  = c_wr[IW-1:0];
                 assign seq_wpos[u*DW +: DW]  = c_wr_pos;
             end
+            assign pair_re        = 1'b0;
+            assign pair_row_e_all = {(M*IW){1'b0}};
+            assign pair_row_o_all = {(M*IW){1'b0}};
+            assign seq2_we        = {M{1'b0}};
+            assign seq2_widx      = {(M*IW){1'b0}};
+            assign seq2_wpos      = {(M*DW){1'b0}};
         end
     endgenerate
     wire unused_graph = &{1'b0, edge_we, edge_a, edge_b, edge_spring, edge_rest, edge_last};  // a chain has no edge memory
@@ -315,7 +327,6 @@ module strand_core #(
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
-            localparam [0:0] STREAM_DOWN = EN_CONSTRAINTS && ARCH && !GRAPH && u % 2 == 1;  // chain_stream: reads downward
             wire here_init = init_we && init_addr[AW-1:IW] == U_ID;
             wire here_load = node_we && cfg_node[AW-1:IW] == U_ID;  // NODE: the address is in cfg_data, as for PIN
             wire here_seq  = seq_we[u];
@@ -329,7 +340,7 @@ module strand_core #(
                 .mouse(mouse_q), .mouse_down(mouse_down_q), .damping(damping), .impulse(impulse),
                 .ground(ground), .friction(friction),
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),
-                .a_idx(STREAM_DOWN && !in_scan && !in_force ? c_rd_down : seq_rd[IW-1:0]), .a_pos(a_pos_all[u*DW +: DW]), .a_prev(a_prev_all[u*DW +: DW]),
+                .a_idx(seq_rd[IW-1:0]), .a_pos(a_pos_all[u*DW +: DW]), .a_prev(a_prev_all[u*DW +: DW]),
                 .a_acc(a_acc_all[u*DW +: DW]), .a_pinned(a_pin_all[u]),
                 .acc_we(here_acc), .acc_w(acc_w_all[u*DW +: DW]),
                 .w_en(here_init || here_load || here_seq),
@@ -338,11 +349,11 @@ module strand_core #(
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
                 .pin_en(pin_we && cfg_node[AW-1:IW] == U_ID), .pin_idx(cfg_node[IW-1:0]),
                 .b_idx(rd_addr[IW-1:0]), .b_pos(b_pos_all[u*DW +: DW]),
-                .pair_re(1'b0), .pair_row_e({IW{1'b0}}), .pair_row_o({IW{1'b0}}),
+                .pair_re(pair_re), .pair_row_e(pair_row_e_all[u*IW +: IW]), .pair_row_o(pair_row_o_all[u*IW +: IW]),
                 .pair_pos_e(pair_pos_e_all[u*DW +: DW]), .pair_pos_o(pair_pos_o_all[u*DW +: DW]),
                 .pair_prev_e(pair_prev_e_all[u*DW +: DW]), .pair_prev_o(pair_prev_o_all[u*DW +: DW]),
                 .pair_pin_e(pair_pin_e_all[u]), .pair_pin_o(pair_pin_o_all[u]),
-                .w2_en(1'b0), .w2_idx({IW{1'b0}}), .w2_pos({DW{1'b0}}),
+                .w2_en(seq2_we[u]), .w2_idx(seq2_widx[u*IW +: IW]), .w2_pos(seq2_wpos[u*DW +: DW]),
                 .wb_valid(wb_valid_all[u*LANES +: LANES]), .wb_idx(wb_idx_all[u*LANES*IW +: LANES*IW]),
                 .wb_pos(wb_pos_all[u*LANES*DW +: LANES*DW]));
         end

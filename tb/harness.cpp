@@ -301,13 +301,13 @@ bool Run::cycle(const cyc_inputs &in) {
         r_.predicted_fault = cyc_;
     // bypass: every write of the pipelined pass lands a cycle early, so the RTL's write-back
     // lane shows the first one in the cycle in which the model writes it
-    // hazard: unit 1 (streaming downward) of a chain of units of odd K takes its even
-    // stream positions in the first sweep where its odd ones are due; its position 0 (node
-    // K-1, free and moving in the scene this runs on) is written at slot 1's write cycle,
-    // where the model writes nothing
+    // hazard: unit 1 (streaming downward, its position 0 of colour 1) takes its even stream
+    // positions in the first sweep where its odd ones are due; its position 0 (node K-1,
+    // free and moving in the scene this runs on) is written at slot 0's write cycle
+    // (LP + 3), where the model writes nothing, and shows on its lane the cycle after
     // (a sweep's writes land up to SP cycles into the next sweep: its time there is st_t + SP)
     if (o_.expect == "hazard" && r_.predicted_fault < 0 && model_.st_running && model_.st_iter == 0 &&
-        model_.st_t + (model_.st_colour ? model_.st_period : 0) == 5 + model_.lp)
+        model_.st_t + (model_.st_colour ? model_.st_period : 0) == 4 + model_.lp)
         r_.predicted_fault = cyc_;
     // graph_hazard: graph_stream goes on to the next colour where it should drain, so the RTL
     // shows the next edge's a one cycle into the model's drain
@@ -319,13 +319,8 @@ bool Run::cycle(const cyc_inputs &in) {
         if (graph_drained_) r_.predicted_fault = cyc_;
         graph_drained_ = model_.gs_state == GS_DRAIN && model_.gs_drain == 0;
     }
-    if (o_.expect == "bypass" && r_.predicted_fault < 0 && model_.st_running && !in.reset)
-        for (int prev = 0; prev < 2; prev++) {
-            int pos = model_.st_t + (prev ? model_.st_period : 0) - 4 - model_.lp;  // the stream position written
-            int bank = prev ? !model_.st_colour : model_.st_colour;                  // at this edge, and by whom
-            for (int u = 0; pos >= 0 && pos < hp_.k && u < hp_.m; u++)
-                if (model_.st_pend[bank][u * hp_.k + (u % 2 ? hp_.k - 1 - pos : pos)]) r_.predicted_fault = cyc_;
-        }
+    if (o_.expect == "bypass" && r_.predicted_fault < 0 && !in.reset && cyc_stream_write_due(&model_))
+        r_.predicted_fault = cyc_;
     if (compared_ && rtl_on_ && model_on_ && !compare()) {
         r_.ok = false;
         r_.mismatch_cycle = cyc_;

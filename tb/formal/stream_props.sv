@@ -3,23 +3,28 @@
 // tb/formal/stream.sby.
 //
 // A pass is two sweeps, colour 0 (even nodes, or links (2j, 2j+1)) then colour 1; uidx is
-// the sweep's colour, counter the slots issued (0 .. K+1), FEC every slot issued. A sweep's
-// writes land from LT + 4 cycles after its start, into the next sweep when the sweeps
+// the sweep's colour, counter the slots issued (0 .. NS, NS = K/2 + 1), FEC every slot
+// issued. Every unit reads a pair of neighbouring nodes a cycle (one from each bank: node
+// 2 row_e and node 2 row_o + 1) and writes up to two (write ports 1 and 2). A sweep's
+// writes land from LT + 3 cycles after its start, into the next sweep when the sweeps
 // overlap (the last sweep of the pass runs until they have landed). Checked:
 //   - counter only holds, steps up by one, or goes back to 0 when a sweep starts (the
-//     colour changes, or a start); FEC is high exactly when counter = K+1, and it is
+//     colour changes, or a start); FEC is high exactly when counter = NS, and it is
 //     reached before every sweep's end;
-//   - no node is written twice within SP cycles (a sweep's period): the constraints in
-//     flight together share no node;
-//   - a write that lands in the first LT + 4 cycles of a sweep is the previous sweep's:
+//   - no node is written twice within SP cycles (a sweep's period), nor by both ports
+//     at once: the constraints in flight together share no node; the two writes of a
+//     unit in one cycle go to different banks (an even and an odd node);
+//   - a write that lands in the first LT + 3 cycles of a sweep is the previous sweep's:
 //     never in the first sweep of a pass, and never to a node the current sweep has read
 //     already (the hazard between colours: every read follows the write it needs);
 //   - centred rule: every write is to a node of its sweep's colour (each constraint
-//     writes its own node and reads only the other colour); pairwise: the chain's end
-//     nodes are written only by the sweep of their one link's colour;
-//   - every address (port A of both directions, writes) is a node of its unit (< K);
+//     writes its own node and reads only the other colour), and only by port 1;
+//     pairwise: the chain's end nodes are written only by the sweep of their one link's
+//     colour;
+//   - every address (the pair reads' rows, the writes) is in its unit (rows < ceil(K/2),
+//     nodes < K); nidx is the upward units' row while the units read;
 //   - done comes only after a start, after exactly 2 ITER sweeps;
-//   - after a reset: done, wr_en, counter are 0.
+//   - after a reset: done, the write enables, counter are 0.
 `default_nettype none
 
 module stream_props #(
@@ -34,31 +39,39 @@ module stream_props #(
     input wire               reset,
     input wire               start,
     input wire [W-1:0]       rest_len,
-    input wire [M*2*W-1:0]   rd_pos_all,
-    input wire [M-1:0]       rd_pin_all
+    input wire [M*2*W-1:0]   pos_e_all,
+    input wire [M*2*W-1:0]   pos_o_all,
+    input wire [M-1:0]       pin_e_all,
+    input wire [M-1:0]       pin_o_all
 );
     localparam integer N  = M * K;
     localparam integer UW = M > 1 ? $clog2(M) : 1;
     localparam integer IW = K > 1 ? $clog2(K) : 1;
     localparam integer CW = $clog2(N + 1);
-    localparam integer SLOTS = K + 1;
+    localparam integer NS = K / 2 + 1;                          // slots a sweep
+    localparam integer PJ = (K + 1) / 2;                        // pairs read a sweep
+    localparam integer SLOTS = NS;
     localparam integer LT = 1 + 1 + 15;                         // the stub's latency (SQRT_BITS = DIV_BITS = 1)
-    localparam integer SP = K + 3 > LT + 4 ? K + 3 : LT + 4;    // chain_stream's sweep period
+    localparam integer SP = NS > LT + 4 ? NS : LT + 4;          // chain_stream's sweep period
 
-    wire             done, fec;
-    wire [IW-1:0]    rd_idx, rd_idx_down, nidx;
-    wire [M-1:0]     wr_en;
-    wire [M*IW-1:0]  wr_idx_all;
-    wire [M*2*W-1:0] wr_pos_all;
+    wire             done, fec, pair_re;
+    wire [M*IW-1:0]  row_e_all, row_o_all;
+    wire [IW-1:0]    nidx;
+    wire [M-1:0]     wr_en, wr2_en;
+    wire [M*IW-1:0]  wr_idx_all, wr2_idx_all;
+    wire [M*2*W-1:0] wr_pos_all, wr2_pos_all;
     wire [UW-1:0]    uidx;
     wire [CW-1:0]    counter;
 
     chain_stream #(.W(W), .F(F), .M(M), .K(K), .SQRT_BITS(1), .DIV_BITS(1), .ITER(ITER), .DIM(2), .RULE(RULE),
                    .ARCH(1'b1)) dut (
         .clk(clk), .reset(reset), .start(start), .done(done), .rest_len(rest_len),
-        .rd_idx(rd_idx), .rd_idx_down(rd_idx_down), .rd_pos_all(rd_pos_all), .rd_pin_all(rd_pin_all),
-        .rd_prev_all({(M*2*W){1'b0}}),
+        .pair_re(pair_re), .pair_row_e_all(row_e_all), .pair_row_o_all(row_o_all),
+        .pair_pos_e_all(pos_e_all), .pair_pos_o_all(pos_o_all),
+        .pair_prev_e_all({(M*2*W){1'b0}}), .pair_prev_o_all({(M*2*W){1'b0}}),
+        .pair_pin_e_all(pin_e_all), .pair_pin_o_all(pin_o_all),
         .wr_en(wr_en), .wr_idx_all(wr_idx_all), .wr_pos_all(wr_pos_all),
+        .wr2_en(wr2_en), .wr2_idx_all(wr2_idx_all), .wr2_pos_all(wr2_pos_all),
         .uidx(uidx), .nidx(nidx), .counter(counter), .fec(fec));
 
     reg f_init = 1'b1;
@@ -72,7 +85,7 @@ module stream_props #(
     reg          reset_prev, colour_prev, fec_seen;
     reg [CW-1:0] counter_prev;
     reg [15:0]   sweeps, tsw;          // sweeps of this pass so far, cycles since this sweep began
-    reg [N-1:0]  read_now, read_seen;  // nodes read by port A (now, and in this sweep before)
+    reg [N-1:0]  read_now, read_seen;  // nodes read by the pair reads (now, and in this sweep before)
     reg [7:0]    since [0:N-1];        // cycles since each node's last write (saturating)
     reg [N-1:0]  ever;                 // written since the reset
     wire         colour   = uidx[0];
@@ -80,13 +93,13 @@ module stream_props #(
     wire         newsweep = !reset_prev && colour != colour_prev;
     wire         step     = {1'b0, counter} == {1'b0, counter_prev} + 1'b1;
     wire [15:0]  t_now    = newsweep ? 16'd0 : tsw;  // chain_stream's t
-    wire         early    = t_now < LT + 4;             // a write now is the previous sweep's
-    wire         reading  = running && t_now >= 1 && t_now <= K;  // port A reads at t = 1 .. K
+    wire         early    = t_now < LT + 3;             // a write now is the previous sweep's
 
     // this cycle's reads and writes, as node bitmaps, and the checks on them
     reg [N-1:0]  wr_now;
     reg          wr_twice, wr_soon, wr_colour_bad, wr_end_bad, wr_range_bad, wr_after_read, wr_first;
-    integer u, v;
+    reg          rd_range_bad, wr_same_bank;
+    integer u, v, p, idx;
     always @* begin
         wr_now = {N{1'b0}};
         read_now = {N{1'b0}};
@@ -97,12 +110,21 @@ module stream_props #(
         wr_range_bad = 1'b0;
         wr_after_read = 1'b0;
         wr_first = 1'b0;
-        for (u = 0; u < M; u = u + 1) if (reading)
-            read_now[u*K + (u % 2 ? rd_idx_down : rd_idx)] = 1'b1;
-        for (u = 0; u < M; u = u + 1) if (wr_en[u]) begin
-            if (wr_idx_all[u*IW +: IW] >= K) wr_range_bad = 1'b1;
+        rd_range_bad = 1'b0;
+        wr_same_bank = 1'b0;
+        for (u = 0; u < M; u = u + 1) if (pair_re) begin
+            if (row_e_all[u*IW +: IW] >= PJ || row_o_all[u*IW +: IW] >= PJ) rd_range_bad = 1'b1;
+            if (2 * row_e_all[u*IW +: IW] < K) read_now[u*K + 2 * row_e_all[u*IW +: IW]] = 1'b1;
+            if (2 * row_o_all[u*IW +: IW] + 1 < K) read_now[u*K + 2 * row_o_all[u*IW +: IW] + 1] = 1'b1;
+        end
+        for (u = 0; u < M; u = u + 1)
+            if (wr_en[u] && wr2_en[u] && wr_idx_all[u*IW] == wr2_idx_all[u*IW]) wr_same_bank = 1'b1;
+        for (p = 0; p < 2 * M; p = p + 1) if (p < M ? wr_en[p] : wr2_en[p - M]) begin
+            u = p < M ? p : p - M;
+            idx = p < M ? wr_idx_all[u*IW +: IW] : wr2_idx_all[u*IW +: IW];
+            if (idx >= K) wr_range_bad = 1'b1;
             else begin
-                v = u * K + wr_idx_all[u*IW +: IW];
+                v = u * K + idx;
                 if (wr_now[v]) wr_twice = 1'b1;
                 wr_now[v] = 1'b1;
                 if (ever[v] && since[v] < SP - 1) wr_soon = 1'b1;
@@ -139,26 +161,26 @@ module stream_props #(
 
     always @* if (!f_init) begin
         if (reset_prev) begin
-            assert (!done && wr_en == {M{1'b0}} && counter == 0);
+            assert (!done && wr_en == {M{1'b0}} && wr2_en == {M{1'b0}} && counter == 0);
         end else begin
             assert (counter <= SLOTS);
             assert (fec == (counter == SLOTS));
             assert (counter == counter_prev || step || counter == 0);
             if (counter == 0 && counter_prev != 0) assert (newsweep || counter_prev == SLOTS);
             if (newsweep) assert (fec_seen);
-            assert (!wr_twice && !wr_range_bad);
+            assert (!wr_twice && !wr_range_bad && !rd_range_bad && !wr_same_bank);
             assert (!wr_soon);
             assert (!wr_first);
             assert (!wr_after_read);
-            assert (wr_en == {M{1'b0}} || running);
-            if (RULE == 1'b0) assert (!wr_colour_bad);
+            assert ((wr_en == {M{1'b0}} && wr2_en == {M{1'b0}}) || running);
+            if (RULE == 1'b0) assert (!wr_colour_bad && wr2_en == {M{1'b0}});
             else assert (!wr_end_bad);
-            assert (rd_idx < K && rd_idx_down < K && nidx == rd_idx);
+            assert (nidx == (pair_re ? row_e_all[0 +: IW] : {IW{1'b0}}));
             if (done) assert (running && fec_seen && sweeps + 16'd1 == 2 * ITER);
         end
         cover (done);
     end
-    wire unused = &{1'b0, wr_pos_all};
+    wire unused = &{1'b0, wr_pos_all, wr2_pos_all};
 endmodule
 
 `resetall
