@@ -217,22 +217,11 @@ module graph_stream #(
     wire [DW-1:0]    o_t, o_p, o_c;
     wire [TAG_W-1:0] o_tag;
     wire [TAG_W-1:0] in_tag = {a_q, b_q, a_pin, rd_pinned};
-    generate
-        if (PROJECTION) begin : g_previous
-            toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
-                               .CARRY(1'b1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
-                .clk(clk), .reset(reset), .in_valid(issue_q), .in_excess(1'b1),
-                .in_p(a_pos), .in_c(rd_pos), .in_pp(a_prev), .in_pc(rd_prev), .in_rest(rest_q), .in_tag(in_tag),
-                .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
-        end else begin : g_current
-            toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
-                          .CARRY(1'b1), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
-                .clk(clk), .reset(reset), .in_valid(issue_q), .in_excess(1'b1),
-                .in_p(a_pos), .in_c(rd_pos), .in_rest(rest_q), .in_tag(in_tag),
-                .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
-            wire unused_prev = &{1'b0, a_prev};
-        end
-    endgenerate
+    dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                .CARRY(1'b1), .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
+        .clk(clk), .reset(reset), .in_valid(issue_q), .in_excess(1'b1),
+        .in_p(a_pos), .in_c(rd_pos), .in_pp(a_prev), .in_pc(rd_prev), .in_rest(rest_q), .in_tag(in_tag),
+        .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
 
     // ---- the split and the two writes: a the cycle after the result, b the cycle after that ----
     wire [AW-1:0] o_a     = o_tag[TAG_W-1 -: AW];
