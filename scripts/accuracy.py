@@ -550,7 +550,7 @@ def projection_section(A, results):
     A("`projection = previous` costs cycles: `toward_prev` takes 2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20 cycles a "
       "correction where `toward` takes SQRT_BITS + DIV_BITS + 2 DIM + 10 (docs/architecture.md), about twice; in the "
       "pipelined pass only the pipe's latency LP grows (2 SQRT_BITS + DIV_BITS + 34 against SQRT_BITS + DIV_BITS "
-      "+ 15), which a sweep of max(K + 3, LP + 4) cycles waits for when the body is short. Each "
+      "+ 15), which a sweep of max(K/2 + 1, LP + 4) cycles waits for when the body is short. Each "
       "body below runs both ways over a grid of substeps and iterations (Q16.16; cycles per frame from the RTL "
       "formula, the serial build). Energy change is over the run, as % of the larger of the starting energy and the "
       "largest kinetic energy (the quantity `strand run` prints); stretch is the largest link stretch over the run.")
@@ -789,7 +789,7 @@ def order_section(A, results, claims):
     A("")
     A("The serial order (reference 000's: each node or link sees its neighbour's new position) converges faster "
       "per iteration; the red/black order (even nodes or links, then odd: `order = redblack`) is what the pipelined "
-      "architecture (ARCH = 1, docs/architecture.md) can keep in flight, one distance evaluation a clock per unit. "
+      "architecture (ARCH = 1, docs/architecture.md) can keep in flight, one constraint a clock per unit. "
       f"The catenary at Q16.16, {BASE['substeps']} substeps, full root and divider, in both orders: its error against "
       "the analytic shape (% of span) and the cycles per frame of the build each order gets (serial: the serial "
       "sequencer; red/black: the pipelined pass), from model/timing.c.")

@@ -68,12 +68,15 @@ BUILDS = [
     ("up5k_q16_1x256", {"M": 1, "K": 256}, "ice40"),
     ("up5k_q10_2x128", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 2, "K": 128}, "ice40"),
     ("up5k_q10_1x256", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 1, "K": 256}, "ice40"),
-    # the pipelined constraint pass (ARCH = 1): generic cells and the ECP5 only; 8x128 is the
-    # 1024-node rope of the speed comparison (docs/performance.md)
+    # the pipelined constraint pass (ARCH = 1): generic cells and the ECP5 only; 4x256 is the
+    # 1024-node rope of the speed comparison (docs/performance.md): eight distance pipes, as many
+    # as the ECP5-85F's multipliers hold, two a unit for the centred rule; 8x128_pair the same
+    # rope with the pairwise rule, one pipe a unit
     ("4x5_pipe", {"M": 4, "K": 5, "ARCH": 1}, "ecp5p"),
     ("8x8_pipe", {"M": 8, "K": 8, "ARCH": 1}, "ecp5p"),
     ("16x16_pipe", {"M": 16, "K": 16, "ARCH": 1}, "ecp5p"),
-    ("8x128_pipe", {"M": 8, "K": 128, "ARCH": 1}, "ecp5p"),
+    ("4x256_pipe", {"M": 4, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("8x128_pair_pipe", {"M": 8, "K": 128, "ARCH": 1, "RULE": 1}, "ecp5p"),
     # a graph's pipelined pass (graph_stream, one toward_pipe): the cloth of tb/bench/graph_cloth.scene
     # (16 x 16 nodes, 480 rods in 4 colours), the graph of the speed comparison
     ("cloth_pipe", {"M": 1, "K": 256, "GRAPH": 1, "RULE": 1, "ARCH": 1, "E_RODS": 480, "COLOURS": 4}, "ecp5p"),
@@ -83,21 +86,22 @@ MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every ta
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
-# on the 4x5 pipelined build takes most of an hour, on the 8x128 some hours). The 4x5, the
-# 8x128 (the 1024-node rope, the largest build of the speed comparison) and the cloth go
-# through synth_ecp5 and nextpnr; the 8x8 (the 8x128's units, fewer nodes) and the 16x16
-# (256 MULT18X18D) get generic cells only, and the report gives the multipliers they would
-# need from the 4x5's per unit.
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "8x128_pipe": [], "cloth_pipe": [1]}
+# on the 4x5 pipelined build takes most of an hour, on the 1024-node builds some hours). The
+# 4x5 and the cloth go through synth_ecp5 and nextpnr; the 4x256 and the 8x128_pair through
+# synth_ecp5 and nextpnr's packing (below); the 8x8 and the 16x16 (more multipliers than the
+# device has) get generic cells only, and the report gives the multipliers they would need.
+PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [], "8x128_pair_pipe": [],
+              "cloth_pipe": [1]}
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
-# but not placed and routed in make synth: the 8x128. Its placement alone takes about 40
-# minutes here, and nextpnr-ecp5's router1 still had some 243,000 overused wires after 11
-# minutes of routing, falling by about 200 per 1,000 iterations, so its route would end
-# hours after the rest of make synth. `synth.py pnr 8x128_pipe` places and routes it alone.
-PIPE_PACK = ["8x128_pipe"]
+# but not placed and routed in make synth: the 1024-node ropes. The placement of a design that
+# fills most of the device takes about 40 minutes here, and nextpnr-ecp5's router1 needs hours
+# more to resolve its congestion, so their route would end hours after the rest of make synth.
+# `synth.py pnr BUILD` places and routes one alone; make synth then takes its figures from the
+# record.
+PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe"]
 # The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
 # where the cells of a unit of the largest build go.
-HIER_BUILD = "8x128_pipe"
+HIER_BUILD = "4x256_pipe"
 # Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
 # pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
 # router was still resolving some 124,000 overused wires after 25 minutes of routing here.
@@ -406,10 +410,13 @@ def report(bdir, gen, out, srcs):
     w("## The pipelined builds (ARCH = 1) on the ECP5-85F")
     w("")
     placed_pipe = [b for b in PIPE if seeds_of(b)]
+    # the multipliers of a distance pipe: a synthesised build's, over its pipes (a unit of the
+    # centred rule has two, of the pairwise rule one)
+    pipes = lambda b: BUILD_MAP[b][0]["M"] * (1 if BUILD_MAP[b][0].get("RULE") else 2)
     per_unit = None
-    if placed_pipe and counts(placed_pipe[0], "ecp5") is not None:
-        b0 = placed_pipe[0]
-        per_unit = pick(counts(b0, "ecp5"), lambda t: t == "MULT18X18D") / BUILD_MAP[b0][0]["M"]
+    synthesised = [b for b in PIPE if counts(b, "ecp5") is not None and not BUILD_MAP[b][0].get("GRAPH")]
+    if synthesised:
+        per_unit = pick(counts(synthesised[0], "ecp5"), lambda t: t == "MULT18X18D") / pipes(synthesised[0])
     unplaced_pipe = [b for b in PIPE if not seeds_of(b) and b not in PIPE_PACK]
 
     def packed(b):
@@ -423,8 +430,9 @@ def report(bdir, gen, out, srcs):
         return ", ".join(f"{r['seconds'] / 60:.0f} min" for r in pnr[b]["ecp5"] if r.get("seconds")) \
             if pnr[b].get("ecp5") else NOT_RUN
 
-    w("The same builds with the pipelined constraint pass (chain_stream: a toward_pipe per unit, one distance "
-      "evaluation a clock each; docs/architecture.md), and a graph's (cloth_pipe: the 256-node cloth of "
+    w("The same builds with the pipelined constraint pass (chain_stream: every unit takes one constraint a clock, a "
+      "node of the centred rule through two toward_pipes, a link of the pairwise rule (the `_pair` builds) through "
+      "one; docs/architecture.md), and a graph's (cloth_pipe: the 256-node cloth of "
       "tb/bench/graph_cloth.scene, its 480 rods streamed through one toward_pipe by graph_stream). Generic cells as "
       "above (hierarchical); "
       + (", ".join(f"{b} (place and route: {pnr_minutes(b)})" for b in placed_pipe)
@@ -436,18 +444,19 @@ def report(bdir, gen, out, srcs):
                 "slowly for make synth). "
                 for b in PIPE_PACK)
       + (f"{', '.join(unplaced_pipe)}: generic cells only (a place and route of the WebAssembly nextpnr-ecp5 "
-         "takes an hour or more here; the 8x8 has the units of the 8x128, the 16x16 more multipliers than the "
-         "device has). " if unplaced_pipe else "")
-      + "The ECP5-85F has 156 MULT18X18D, which bounds the units that fit"
-      + (f": the placed build's toward_pipes take {per_unit:g} a unit (two squares and two products of 32 x 32 bits), "
-         f"so at most {int(156 // per_unit)} units fit; the last column gives M x {per_unit:g} for each build."
-         if per_unit else "."))
+         "takes an hour or more here). " if unplaced_pipe else "")
+      + "The ECP5-85F has 156 MULT18X18D, which bounds the pipes that fit"
+      + (f": a toward_pipe takes {per_unit:g} (two squares and two products of 32 x 32 bits; {synthesised[0]}'s "
+         f"count over its pipes), so at most {int(156 // per_unit)} pipes fit: {int(156 // per_unit) // 2} units of the "
+         f"centred rule, {int(156 // per_unit)} of the pairwise; the last column gives each build's pipes x "
+         f"{per_unit:g}." if per_unit else "."))
     w("")
     w("| build | generic cells | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD "
-      "| fmax per seed, MHz | median | MULT18X18D needed (M x per unit) |")
+      "| fmax per seed, MHz | median | MULT18X18D needed (pipes x per pipe) |")
     w("|---|--:|--:|--:|--:|--:|--:|--:|---|---|--:|--:|")
     for b in PIPE:
-        mults = BUILD_MAP[b][0]["M"] * per_unit if per_unit else None
+        mults = pipes(b) * per_unit if per_unit and not BUILD_MAP[b][0].get("GRAPH") else \
+            per_unit if per_unit else None
         need = f"{mults:g}{'' if mults <= 156 else ' (over 156)'}" if mults else "-"
         if not seeds_of(b) and b not in PIPE_PACK:
             w(f"| {b} | {total_of(b, 'generic')} | - | - | - | - | - | - | not synthesised for "
