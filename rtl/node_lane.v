@@ -18,7 +18,8 @@
  * verlet_node(), every operation a saturating fx_add / fx_mul in the model's order):
  *     v = q - qp;  v = v - v*d (EN_DAMPING);  n = q + v;  n = n + g h^2 (EN_GRAVITY);
  *     n = n + qa (EN_SPRINGS)
- * The mouse (EN_MOUSE, not GRAB): `touch` says |mouse - n| < box on this axis; the
+ * The mouse (EN_MOUSE, not GRAB): `touch` says |mouse - n| < box on this axis
+ * (touch_lo < n < touch_hi, the box around the pointer that frame_ctrl forms); the
  * impulse itself acts on x only (reference 000, mouse_node()): lane 0 makes
  *     np = in_touch ? (mouse < q ? n + a : n - a) : q
  * The ground pass (EN_GROUND, ground_node()): on the normal axis (AXIS = GROUND_AXIS)
@@ -83,9 +84,8 @@ module node_lane #(
     input  wire [W-1:0]  gdt2,       // g h^2
     input  wire [W-1:0]  damping,    // d
     input  wire [W-1:0]  impulse,    // a (lane 0)
-    input  wire [W-1:0]  box,        // in-touch half-width
-    input  wire [W-1:0]  box_neg,    // -box, exact in W+1 bits (the top bit)
-    input  wire          box_neg_top,
+    input  wire [W:0]    touch_lo,   // mouse - box, exact: in touch when touch_lo < n < touch_hi
+    input  wire [W:0]    touch_hi,   // mouse + box
     input  wire [W-1:0]  mouse,      // the pointer, sampled at the frame start
     input  wire          in_touch,   // every axis touches and the button is down (lane 0's impulse)
     input  wire [W-1:0]  ground,     // the ground boundary (on the normal axis)
@@ -217,11 +217,11 @@ module node_lane #(
     // ---- stages C and W, the mouse: this axis's in-touch test, and the impulse (x only) ----
     generate
         if (EN_MOUSE && !GRAB) begin : g_mouse
-            // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, both exact in W+1 bits
-            // (a saturated difference is never inside the box): no saturating subtract,
-            // no negation per node
-            wire [W:0] dd = {mouse[W-1], mouse} - {n_c[W-1], n_c};
-            assign touch_c = $signed(dd) < $signed({box[W-1], box}) && $signed({box_neg_top, box_neg}) < $signed(dd);
+            // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, exact (a saturated difference
+            // is never inside the box)  <=>  mouse - box < n < mouse + box: two comparisons of
+            // n with the box frame_ctrl forms once a frame, no subtraction per node
+            wire [W:0] n_x = {n_c[W-1], n_c};
+            assign touch_c = $signed(touch_lo) < $signed(n_x) && $signed(n_x) < $signed(touch_hi);
             if (AXIS == 0) begin : g_impulse
                 // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left
                 // of x, a comparison made in stage B); taken in stage W when every axis touches
@@ -236,7 +236,7 @@ module node_lane #(
             assign touch_c = 1'b1;
             assign pushed = q_c;
             assign np = q_w;
-            wire unused_mouse = &{1'b0, impulse, box, box_neg, box_neg_top, in_touch, left_c, pushed_w};
+            wire unused_mouse = &{1'b0, impulse, touch_lo, touch_hi, in_touch, left_c, pushed_w};
         end
     endgenerate
 

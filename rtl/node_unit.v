@@ -55,9 +55,8 @@ module node_unit #(
 
     // the run-time constants and the pointer, DIM lanes each (lane k at bits k W +: W)
     input  wire [DIM*W-1:0] gdt2,
-    input  wire [DIM*W-1:0] box,
-    input  wire [DIM*W-1:0] box_neg,      // -box, exact in W+1 bits: low W bits ...
-    input  wire [DIM-1:0]   box_neg_top,  //   ... and the top bit, per lane
+    input  wire [DIM*(W+1)-1:0] touch_lo, // the in-touch box: mouse - box and mouse + box,
+    input  wire [DIM*(W+1)-1:0] touch_hi, //   W+1 bits per lane, exact
     input  wire [DIM*W-1:0] mouse,
     input  wire             mouse_down,
     input  wire [W-1:0]     damping,
@@ -261,7 +260,7 @@ module node_unit #(
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
                 .gdt2(gdt2[k*W +: W]), .damping(damping), .impulse(impulse),
-                .box(box[k*W +: W]), .box_neg(box_neg[k*W +: W]), .box_neg_top(box_neg_top[k]),
+                .touch_lo(touch_lo[k*(W+1) +: W+1]), .touch_hi(touch_hi[k*(W+1) +: W+1]),
                 .mouse(mouse[k*W +: W]), .in_touch(in_touch), .ground(ground), .friction(friction),
                 .q(a_pos[k*W +: W]), .qp(a_prev[k*W +: W]), .qa(a_acc[k*W +: W]), .b_data(b_pos_raw[k*W +: W]),
                 .q_e(pair_pos_e[k*W +: W]), .q_o(pair_pos_o[k*W +: W]),

@@ -76,15 +76,14 @@ module strand_core #(
     localparam [UW:0] M_COUNT = M[UW:0];
 
     // ---- registers ----
-    wire [DW-1:0]  gdt2, box, box_neg, start_pos, step_pos, prev_off, load_pos, load_prev;
-    wire [DIM-1:0] box_neg_top;
+    wire [DW-1:0]  gdt2, box, start_pos, step_pos, prev_off, load_pos, load_prev;
     wire [W-1:0]   rest_len, impulse, damping, ks, kd, ground, friction, edge_rest;
     wire           cmd_init, pin_we, node_we_any, edge_we_any, irq_ack;
     strand_regfile #(
 `include "strand_params_pass.vh"
     ) u_regs (
         .clk(clk), .reset(reset), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
-        .gdt2(gdt2), .box(box), .box_neg(box_neg), .box_neg_top(box_neg_top), .start_pos(start_pos),
+        .gdt2(gdt2), .box(box), .start_pos(start_pos),
         .step_pos(step_pos), .prev_off(prev_off), .load_pos(load_pos), .load_prev(load_prev),
         .rest_len(rest_len), .impulse(impulse), .damping(damping), .ks(ks), .kd(kd), .ground(ground),
         .friction(friction), .edge_rest(edge_rest),
@@ -95,6 +94,7 @@ module strand_core #(
     wire          frame_start, verlet_start, ground_start, seq_start, force_start;
     wire          fv, seq_done, force_done, scan_end;
     wire [DW-1:0] mouse_q;
+    wire [DIM*(W+1)-1:0] touch_lo, touch_hi;  // the in-touch box around the pointer
     wire          mouse_down_q;
     wire          init_we;
     wire [AW-1:0] init_addr;
@@ -109,7 +109,7 @@ module strand_core #(
         .fv(fv), .seq_done(seq_done), .force_done(force_done), .scan_end(scan_end),
         .phase(phase), .frame_start(frame_start), .verlet_start(verlet_start), .ground_start(ground_start),
         .seq_start(seq_start), .force_start(force_start), .frame_done(frame_done), .irq(irq),
-        .mouse_q(mouse_q), .mouse_down_q(mouse_down_q),
+        .mouse_q(mouse_q), .mouse_down_q(mouse_down_q), .box(box), .touch_lo(touch_lo), .touch_hi(touch_hi),
         .init_we(init_we), .init_addr(init_addr), .init_pos(init_pos), .init_prev(init_prev));
     assign busy = phase != PH_IDLE;
     // NODE and EDGE writes load a graph's body, only when idle (a chain is laid out by CMD)
@@ -336,7 +336,7 @@ module strand_core #(
                 , .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
-                .gdt2(gdt2), .box(box), .box_neg(box_neg), .box_neg_top(box_neg_top),
+                .gdt2(gdt2), .touch_lo(touch_lo), .touch_hi(touch_hi),
                 .mouse(mouse_q), .mouse_down(mouse_down_q), .damping(damping), .impulse(impulse),
                 .ground(ground), .friction(friction),
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),

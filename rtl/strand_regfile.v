@@ -15,9 +15,6 @@
  * PIN, NODE, EDGE, CMD and IRQ_ACK are strobes: they act in the cycle of the write
  * (strand_core decides which may act when).
  *
- * box_neg is -box per axis, exact in W+1 bits, formed once here for every unit's
- * in-touch test.
- *
  * A register the build does not use (its effect is switched off: KS without springs,
  * START in a graph, LOAD in a chain, ...) reads as 0 and is not built: the register
  * has no reader, so synthesis removes it, even with the hierarchy kept.
@@ -33,8 +30,6 @@ module strand_regfile #(
 
     output wire [DIM*W-1:0] gdt2,       // g h^2
     output wire [DIM*W-1:0] box,        // the mouse's in-touch half-widths
-    output wire [DIM*W-1:0] box_neg,    // -box: low W bits ...
-    output wire [DIM-1:0]   box_neg_top,//   ... and the top bit
     output wire [DIM*W-1:0] start_pos,  // the init walk: node 0, the step, the previous-position offset
     output wire [DIM*W-1:0] step_pos,
     output wire [DIM*W-1:0] prev_off,
@@ -137,11 +132,8 @@ module strand_regfile #(
                     if (cfg_addr == A_LOADP[k*AB +: AB]) loadp_q <= cfg_data;
                 end
             end
-            wire [W:0] neg = {W+1{1'b0}} - {box_q[W-1], box_q};  // exact
             assign gdt2[k*W +: W]      = EN_GRAVITY ? gdt2_q : {W{1'b0}};
             assign box[k*W +: W]       = USE_BOX ? box_q : {W{1'b0}};
-            assign box_neg[k*W +: W]   = USE_BOX ? neg[W-1:0] : {W{1'b0}};
-            assign box_neg_top[k]      = USE_BOX && neg[W];
             assign start_pos[k*W +: W] = USE_LAYOUT ? start_q : {W{1'b0}};
             assign step_pos[k*W +: W]  = USE_LAYOUT ? step_q : {W{1'b0}};
             assign prev_off[k*W +: W]  = USE_LAYOUT ? prev_q : {W{1'b0}};
