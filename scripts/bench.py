@@ -247,14 +247,17 @@ def rope(rows):
            f"one core, the same frames; the fastest of {CPU_REPEATS} runs, measured now).", "",
            "| substeps | iterations | g h^2, LSB | cycles per frame (RTL) | updates per clock in the constraint passes "
            "(of M) | clock for 60 frames/s, MHz | " + (f"frames/s at {mhz:.1f} MHz | " if mhz else "")
-           + "CPU double, frames/s | largest stretch | stretch at rest |",
-           "|--:|--:|--:|--:|--:|--:|" + ("--:|" if mhz else "") + "--:|--:|--:|"]
+           + "CPU double, frames/s | " + ("core / CPU | " if mhz else "") + "largest stretch | stretch at rest |",
+           "|--:|--:|--:|--:|--:|--:|" + ("--:|" if mhz else "") + "--:|" + ("--:|" if mhz else "") + "--:|--:|"]
     for p in points:
         cells = [str(p["subs"]), str(p["iters"]), f"{p['gh2']:.1f}", str(p["cyc"]),
                  f"{p['per_clock_c']:.3f} ({p['per_clock_c'] / r['m']:.3f} M)", f"{60 * p['cyc'] / 1e6:.1f}"]
         if mhz:
             cells.append(f"{mhz * 1e6 / p['cyc']:.0f}")
-        cells += [f"{p['cpu_fps']:.1f}", f"{p['smax']:.4f} %", f"**{p['sfin']:.4f} %**"]
+        cells.append(f"{p['cpu_fps']:.1f}")
+        if mhz:
+            cells.append(f"**{mhz * 1e6 / p['cyc'] / p['cpu_fps']:.2f}x**")
+        cells += [f"{p['smax']:.4f} %", f"**{p['sfin']:.4f} %**"]
         out.append("| " + " | ".join(cells) + " |")
     out.append("")
     # the goal: the best stretch at rest that 60 frames per second allow at the build's fmax
