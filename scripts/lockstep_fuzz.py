@@ -9,8 +9,10 @@ Every scene is drawn from a seed: its build (W, F, M, K, SQRT_BITS, DIV_BITS, IT
 SUBSTEPS and the EN_* effects: springs, ground, the mouse's impulse or grab form, 2D or 3D,
 a chain or a graph), its constants (start, step, rest length, gravity,
 damping, pins), its mouse script and its length, all within what the RTL supports.
-A Verilator build costs about a minute, so scenes share builds: the three builds of
-the RTL test scenes and B more drawn from --seed. Scene i runs on build i mod (3 + B).
+A Verilator build costs half a minute or more, so scenes share builds: the three builds
+of the RTL test scenes and B more drawn from --seed. Scene i runs on build i mod (3 + B).
+The harnesses of a run are compiled without optimisation (build/vl/*_fast): that halves a
+build and slows a run about four times, and a run here is mostly its build.
 
 Coverage by construction: the first len(PLAN) drawn builds each fix the classes of one
 row of PLAN below (2D/3D, chain/graph, rule, serial/pipelined, K=1, springs, ground
@@ -401,14 +403,16 @@ def fewest_scenes(builds, seed):
     return None, [name for name, _ in CLASSES if name in want - got]
 
 
-def build_harness(scene, build, rtl="rtl", order=None, fault="", deep=False):
+def build_harness(scene, build, rtl="rtl", order=None, fault="", deep=False, fast=False):
     """The harness of a scene's build (shared by every scene of that build): (path, None),
-    or (None, why) when it did not build. deep: the build that traces every signal."""
+    or (None, why) when it did not build. deep: the build that traces every signal; fast:
+    compiled without optimisation (a batch of runs: most of them short, so that the compile
+    is most of their time and -O0 halves it, while it slows a run about four times)."""
     try:
-        return flow_build.harness_for(scene, harness_dir(build, fault, deep), rtl, order,
-                                      trace="deep" if deep else "top"), None
+        return flow_build.harness_for(scene, harness_dir(build, fault, deep, fast), rtl, order,
+                                      opt="fast" if fast else "", trace="deep" if deep else "top"), None
     except Failure as e:
-        log = os.path.join(ROOT, harness_dir(build, fault, deep), "build.log")
+        log = os.path.join(ROOT, harness_dir(build, fault, deep, fast), "build.log")
         return None, (open(log).read() if "verilator" in str(e) and os.path.exists(log) else "") + str(e)
 
 
@@ -511,7 +515,7 @@ def main():
         if fault:  # a copy of rtl/ with the fault planted
             rtl = os.path.join(ROOT, BUILD, "faults", fault)
             faults.plant(fault, rtl)
-        return key, build_harness(path, build, rtl, order or None, fault)
+        return key, build_harness(path, build, rtl, order or None, fault, fast=True)
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
         for key, (exe, why) in ex.map(make, needed.items()):
             if exe is None:
@@ -521,7 +525,7 @@ def main():
 
     def one(job):
         label, args, build, fault, _ = job
-        harness = os.path.join(ROOT, harness_dir(build, fault), "harness")
+        harness = os.path.join(ROOT, harness_dir(build, fault, fast=True), "harness")
         workdir = os.path.join(ROOT, BUILD, "fuzz")  # where a failing run leaves mismatch.fst
         rc, out = flow_run.harness(harness, args[0], args[1:], cwd=workdir)
         return job, rc, out
@@ -569,7 +573,7 @@ def main():
         if a.coverage_json:
             with open(a.coverage_json, "w") as fh:
                 json.dump({"seed": a.seed, "scenes": len(seeds), "builds": len(builds), "fewest": fewest,
-                           "harnesses": [harness_dir(b["params"]) for b in builds],
+                           "harnesses": [harness_dir(b["params"], fast=True) for b in builds],
                            "covered": covered, "classes": CLASSES, "plans": [b["plan"] for b in builds],
                            "failed": failed}, fh, indent=1)
     if digests:

@@ -152,7 +152,8 @@ def main():
         os.replace(prog_path + ".tmp", prog_path)
         # the chunk's own harnesses go: its builds' (from its coverage file) that were not there
         # before it, and not the fixed builds' (other runs may share build/vl)
-        fixed = {os.path.basename(lockstep_fuzz.harness_dir(lockstep_fuzz.read_build(s))) for s in lockstep_fuzz.FIXED_BUILDS}
+        fixed = {os.path.basename(lockstep_fuzz.harness_dir(lockstep_fuzz.read_build(s), fast=True))
+                 for s in lockstep_fuzz.FIXED_BUILDS}
         for h in c.get("harnesses", []):
             name = os.path.basename(h)
             if name in before or name in fixed:

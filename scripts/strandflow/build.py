@@ -127,12 +127,12 @@ def build_key(params):
     return hashlib.sha1(repr(sorted(params.items())).encode()).hexdigest()[:10]
 
 
-def harness_dir(params, fault="", deep=False):
+def harness_dir(params, fault="", deep=False, fast=False):
     """Where the harness of a build (strand_core's parameters) lives under build/vl/, so that
     every script that needs the same build finds the same binary (deep: the build that traces
-    every signal)."""
+    every signal; fast: compiled without optimisation, opt="fast")."""
     return os.path.join(BUILD, "vl", "b_" + build_key(params) + (f"_fault_{fault}" if fault else "")
-                        + ("_deep" if deep else ""))
+                        + ("_deep" if deep else "") + ("_fast" if fast else ""))
 
 
 def main(argv):
