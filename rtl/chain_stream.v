@@ -143,8 +143,11 @@ module chain_stream #(
     // a slot or pair number needs the low bits only
     wire [TW-1:0] t_minus_2 = t - T_TWO;
     wire [TW-1:0] t_minus_1 = t - 1'b1;
+    // the slot number j = t - 2, as XW bits: zero-extended first, since the sweep counter can be
+    // narrower than a slot number (K = 256: TW = 8 bits, XW = 9)
+    wire [TW+XW-1:0] t_minus_2_wide = {{XW{1'b0}}, t_minus_2};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [XW-1:0] j  = t_minus_2[XW-1:0];
+    wire [XW-1:0] j  = t_minus_2_wide[XW-1:0];
     wire [IW-1:0] jr = reading ? t_minus_1[IW-1:0] : {IW{1'b0}};
 
     always @(posedge clk) begin

@@ -265,8 +265,10 @@ def run_yosys(flow, params, d, srcs):
 
 def build_harness(d, vh, h, o):
     """The harness of one build unless cached; returns its path. One Verilator job per
-    build: effects runs --jobs builds at once."""
-    return flow_build.harness(d, vh, h, rtl=o.rtl_dir, jobs=1)
+    build: effects runs --jobs builds at once. Compiled without optimisation (opt="fast"):
+    a run here is a few frames, whose cycles and digest do not depend on it, so the
+    compile is most of the time (about half of it at -O0)."""
+    return flow_build.harness(d, vh, h, rtl=o.rtl_dir, jobs=1, opt="fast")
 
 
 def run_harness(exe, scene_path, frames, cwd, as_built=False):
