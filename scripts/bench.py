@@ -82,18 +82,22 @@ def rtl_figures(scene, frames, order):
                               "--order", order]))
 
 
+SYNTH = {"pnr": {}, "packs": {}}  # make synth's results for this RTL (main() fills it from synth.gather)
+
+
 def fmax_of(name):
-    """(median MHz or None, text) of make synth's ECP5-85F runs of build `name`."""
-    try:
-        runs = synth.load_pnr(os.path.join(ROOT, BUILD, "synth"), name, "ecp5")
-    except synth.Failure:
-        try:  # a build make synth packs but does not place: whether it fits
-            pack = synth.load_pack(os.path.join(ROOT, BUILD, "synth"), name)
+    """(median MHz or None, text) of make synth's ECP5-85F runs of build `name`, for this RTL only
+    (a result of other sources left in build/synth does not count)."""
+    runs = (SYNTH["pnr"].get(name) or {}).get("ecp5")
+    if runs is None:
+        pack = SYNTH["packs"].get(name)
+        if pack is not None:  # a build make synth packs but does not place: whether it fits
             comb = pack.get("util", {}).get("TRELLIS_COMB")
             return None, ("packs into the device" + (f" ({100 * comb[0] / comb[1]:.0f} % of TRELLIS_COMB)" if comb else "")
                           if pack.get("fits") else "does not fit") + ", not placed"
-        except synth.Failure:
-            return None, "not placed"
+        # placed (or packed) by make synth, but not for this RTL; or not placed at all
+        run_by_synth = name in synth.BUILD_MAP and bool(synth.ecp5_steps(name))
+        return None, "no make synth result for this RTL" if run_by_synth else "not placed"
     text, med = synth.fmax_cells(runs)
     return med, (f"{med:.1f}" if med is not None else text)
 
@@ -349,7 +353,9 @@ def write_variant(scene, name, **keys):
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else "docs/performance.md"
     os.chdir(ROOT)  # the RTL sources by the names make gives them (they are part of synth's keys)
-    missing = synth.restore(os.path.join(BUILD, "synth"), os.path.join(BUILD, "gen"), synth.rtl_sources())
+    _, SYNTH["pnr"], SYNTH["packs"], missing_steps = synth.gather(os.path.join(BUILD, "synth"), os.path.join(BUILD, "gen"),
+                                                                   synth.rtl_sources())
+    missing = len(missing_steps)
     print(f"bench: make synth's results for this RTL taken from build/synth and its record "
           f"({missing} step(s) not run for it)", flush=True)
     phys = physics()
