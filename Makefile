@@ -326,7 +326,8 @@ lint-rtl: $(GEN_HDRS) $(STRAND)
 	@{ for s in $(LINT_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; \
 	   for s in $(PREV_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; } > $(BUILD)/lint-builds.all
 	@sort -u $(BUILD)/lint-builds.all > $(BUILD)/lint-builds.txt  # (a pipe into sort would hide a refused build)
-	@while read -r g; do verilator --lint-only -Wall -I$(GEN) -Irtl $$g $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$g"; exit 1; }; done < $(BUILD)/lint-builds.txt
+	@# JOBS builds at once (a line of lint-builds.txt is one build's -G flags)
+	@xargs -P $(JOBS) -d '\n' -n 1 sh -c 'verilator --lint-only -Wall -I$(GEN) -Irtl $$1 $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$1"; exit 1; }' lint-rtl < $(BUILD)/lint-builds.txt
 	@out=$$(iverilog -Wall -g2005 -I$(GEN) -Irtl -o /dev/null $(TOP_SRC) 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
 	@$(STRAND) hwgen tb/scenes/chain_q10_8.scene $(BUILD)/lint-board --frames 1 >/dev/null
 	@for top in icebreaker_top ulx3s_top; do \
