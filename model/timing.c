@@ -60,10 +60,10 @@ long hw_stream_period(const hw_params *hp)
     /* chain_stream.v: every unit reads the pairs of stream positions (2j, 2j+1) at t = j + 1
        (even units upward, odd ones downward), slots j = 0 .. NS-1 at t = j + 2; slot j's writes
        land in cycle j + LP + 3. The next sweep starts when its reads follow those writes (its
-       read of pair j, at t = j + 1, after slot j + 1's write: LP + 4) and its slots this
-       sweep's (NS). */
-    long ns = stream_slots(hp), lp4 = hw_toward_pipe_latency(hp) + 4;
-    return ns > lp4 ? ns : lp4;
+       read of pair j, at t = j + 1, after slot j + 1's write: LP + 4) and this sweep's last
+       slot has issued (slot NS-1 at t = NS + 1: NS + 2). */
+    long slots2 = stream_slots(hp) + 2, lp4 = hw_toward_pipe_latency(hp) + 4;
+    return slots2 > lp4 ? slots2 : lp4;
 }
 
 long hw_stream_last(const hw_params *hp)
@@ -139,7 +139,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     graph_streams(hp) ? "2 E_RODS + COLOURS (LP + 3) (pipelined graph)"
-                    : hp->arch        ? "2 sweeps of SP = max(K/2 + 1, LP + 4) (pipelined)"
+                    : hp->arch        ? "2 sweeps of SP = max(K/2 + 3, LP + 4) (pipelined)"
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
                     chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",

@@ -20,7 +20,7 @@ long hw_spring_latency(const hw_params *hp);
 long hw_spring_pipe_latency(const hw_params *hp);
 long hw_spring_sweep(const hw_params *hp);
 /* chain_stream.v (ARCH = 1): a sweep (one colour of a pass), its start to the next sweep's
-   (SP = max(K/2 + 1, LP + 4): the drain of one overlaps the next), and the last sweep of the
+   (SP = max(K/2 + 3, LP + 4): the drain of one overlaps the next), and the last sweep of the
    constraint passes of a substep, to its drain (SL = K/2 + LP + 4). */
 long hw_stream_period(const hw_params *hp);
 long hw_stream_last(const hw_params *hp);

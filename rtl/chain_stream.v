@@ -54,11 +54,11 @@
  *                its own end.
  *   Slot j's writes land in cycle j + LT + 3. The next sweep's read of pair j (cycle
  *   SP + j + 1) follows the last write to either of its positions (slot j + 1's, in
- *   cycle j + LT + 4) when SP >= LT + 4, and its slots follow this sweep's when
- *   SP >= NS: the next sweep starts at t = SP = max(NS, LT + 4), so sweeps overlap by
- *   their drain; the last sweep of the pass runs to t = SL - 1, SL = NS + LT + 3 (its
- *   last write lands in cycle NS + LT + 2), and done is high the cycle after (2 ITER
- *   sweeps a pass: (2 ITER - 1) SP + SL cycles).
+ *   cycle j + LT + 4) when SP >= LT + 4, and this sweep's last slot (NS-1, at t = NS + 1)
+ *   has issued when SP >= NS + 2: the next sweep starts at t = SP = max(NS + 2, LT + 4),
+ *   so sweeps overlap by their drain; the last sweep of the pass runs to t = SL - 1,
+ *   SL = NS + LT + 3 (its last write lands in cycle NS + LT + 2), and done is high the
+ *   cycle after (2 ITER sweeps a pass: (2 ITER - 1) SP + SL cycles).
  * Global node g = u K + x has colour g mod 2; the chain's end nodes have one neighbour
  * (the operation runs and its result is dropped), so every sweep takes the same time.
  *
@@ -104,7 +104,7 @@ module chain_stream #(
     localparam integer PJ     = (K + 1) / 2;                   // pairs read a sweep
     localparam integer NS     = K / 2 + 1;                     // slots a sweep
     localparam [0:0]   K_EVEN = K % 2 == 0;
-    localparam integer SP     = NS > LT + 4 ? NS : LT + 4;     // a sweep's cycles before the next
+    localparam integer SP     = NS + 2 > LT + 4 ? NS + 2 : LT + 4;  // a sweep's cycles before the next
     localparam integer SL     = NS + LT + 3;                   // the last sweep's, to its last write
     localparam integer TW     = $clog2(SL + 1);
     localparam integer XW     = IW + 1;                        // a slot number, 0 .. NS-1

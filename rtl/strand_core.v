@@ -115,8 +115,13 @@ module strand_core #(
     // NODE and EDGE writes load a graph's body, only when idle (a chain is laid out by CMD)
     wire node_we = node_we_any && phase == PH_IDLE && GRAPH;
     wire edge_we = edge_we_any && phase == PH_IDLE && GRAPH;
+    // zero-extended so that a chain's build (no EDGE word: 2 AW may pass W) selects in range
+    /* verilator lint_off UNUSEDSIGNAL */
+    // b needs bits 2 AW-1 .. AW only
+    wire [W+2*AW-1:0] cfg_data_wide = {{(2*AW){1'b0}}, cfg_data};
+    /* verilator lint_on UNUSEDSIGNAL */
     wire [AW-1:0] edge_a      = cfg_data[AW-1:0];
-    wire [AW-1:0] edge_b      = cfg_data[2*AW-1:AW];
+    wire [AW-1:0] edge_b      = cfg_data_wide[2*AW-1:AW];
     wire          edge_spring = cfg_data[(2*AW < W ? 2*AW : W-1)];
     wire          edge_last   = cfg_data[(2*AW+1 < W ? 2*AW+1 : W-1)];  // ARCH: the edge ends its colour
     wire [AW-1:0] cfg_node    = cfg_data[AW-1:0];  // PIN and NODE: a node address

@@ -46,8 +46,8 @@ FAULTS = {
     # the pipelined pass (ARCH = 1): a sweep one cycle short, so the next colour reads before
     # the last write of the previous one has landed (shows first as the colour changing early)
     "boundary": [
-        ("chain_stream.v", r"^    localparam integer SP     = NS > LT \+ 4 \? NS : LT \+ 4; .*\n",
-         "    localparam integer SP     = (NS > LT + 4 ? NS : LT + 4) - 1;  // planted fault: a sweep one cycle short\n"),
+        ("chain_stream.v", r"^    localparam integer SP     = NS \+ 2 > LT \+ 4 \? NS \+ 2 : LT \+ 4; .*\n",
+         "    localparam integer SP     = (NS + 2 > LT + 4 ? NS + 2 : LT + 4) - 1;  // planted fault: a sweep one cycle short\n"),
     ],
     # the pipelined pass: toward_pipe's output register bypassed (every result a cycle early)
     "bypass": [

@@ -52,7 +52,7 @@ module stream_props #(
     localparam integer PJ = (K + 1) / 2;                        // pairs read a sweep
     localparam integer SLOTS = NS;
     localparam integer LT = 1 + 1 + 15;                         // the stub's latency (SQRT_BITS = DIV_BITS = 1)
-    localparam integer SP = NS > LT + 4 ? NS : LT + 4;          // chain_stream's sweep period
+    localparam integer SP = NS + 2 > LT + 4 ? NS + 2 : LT + 4;  // chain_stream's sweep period
 
     wire             done, fec, pair_re;
     wire [M*IW-1:0]  row_e_all, row_o_all;
