@@ -705,18 +705,22 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         const int sweep = last ? c->st_last : c->st_period;
         const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k / 2 + 2; /* slots 0 .. K/2 */
         const bool sweep_end = c->st_running && c->st_t == sweep - 1;
+        /* the count restarts at the sweep's first slot: it reaches K/2 + 1 (FEC) even when the
+           last slot issues in the sweep's last cycle, and keeps it until the next sweep's first */
+        const int counter_next = !slot ? c->st_counter : c->st_t == 2 ? 1 : c->st_counter + 1;
         c->st_done = sweep_end && last;
         if (seq_start && !c->st_running) {
             c->st_running = true;
             c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
         } else if (sweep_end) {
-            c->st_t = c->st_counter = 0;
+            c->st_t = 0;
+            c->st_counter = counter_next;
             if (last) c->st_running = false;
             if (c->st_colour) c->st_iter++;
             c->st_colour ^= 1;
         } else if (c->st_running) {
             c->st_t++;
-            if (slot) c->st_counter++;
+            c->st_counter = counter_next;
         }
     }
 

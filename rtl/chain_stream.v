@@ -63,7 +63,8 @@
  * (the operation runs and its result is dropped), so every sweep takes the same time.
  *
  * Observation (DEBUG): uidx is the sweep's colour, nidx the pair read (j, while the
- * units read), counter the slots issued in this sweep (0 .. NS), FEC = every slot issued.
+ * units read), counter the slots issued in this sweep (0 .. NS; it keeps the last sweep's
+ * count until the next sweep issues its first slot, at t = 2), FEC = every slot issued.
  */
 module chain_stream #(
 `include "strand_params.vh"
@@ -149,6 +150,10 @@ module chain_stream #(
     /* verilator lint_on UNUSEDSIGNAL */
     wire [XW-1:0] j  = t_minus_2_wide[XW-1:0];
     wire [IW-1:0] jr = reading ? t_minus_1[IW-1:0] : {IW{1'b0}};
+    // the slots issued: the count restarts at the sweep's first slot, so that it reaches NS
+    // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 2), and FEC
+    // stays high until the next sweep's first slot
+    wire [CW-1:0] counter_next = !slot ? counter : t == T_TWO ? {{(CW-1){1'b0}}, 1'b1} : counter + 1'b1;
 
     always @(posedge clk) begin
         if (reset) begin
@@ -168,13 +173,13 @@ module chain_stream #(
                 counter <= {CW{1'b0}};
             end else if (sweep_end) begin
                 t       <= {TW{1'b0}};
-                counter <= {CW{1'b0}};
+                counter <= counter_next;
                 if (last) running <= 1'b0;
                 colour <= !colour;
                 if (colour) iter_q <= iter_q + 1'b1;
             end else if (running) begin
-                t <= t + 1'b1;
-                if (slot) counter <= counter + 1'b1;
+                t       <= t + 1'b1;
+                counter <= counter_next;
             end
         end
     end

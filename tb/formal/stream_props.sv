@@ -144,8 +144,9 @@ module stream_props #(
         reset_prev   <= reset;
         colour_prev  <= colour;
         counter_prev <= counter;
-        if (reset || newsweep || started) fec_seen <= fec;
-        else if (fec) fec_seen <= 1'b1;
+        // FEC reached by a slot of this sweep (the count restarts at a sweep's first slot)
+        if (reset || newsweep || started) fec_seen <= 1'b0;
+        else if (fec && step) fec_seen <= 1'b1;
         if (reset || started) sweeps <= 16'd0;
         else if (newsweep || done) sweeps <= sweeps + 16'd1;
         // t = 0 is the cycle after a start, and the cycle the colour changes
@@ -165,9 +166,10 @@ module stream_props #(
         end else begin
             assert (counter <= SLOTS);
             assert (fec == (counter == SLOTS));
-            assert (counter == counter_prev || step || counter == 0);
-            if (counter == 0 && counter_prev != 0) assert (newsweep || counter_prev == SLOTS);
-            if (newsweep) assert (fec_seen);
+            assert (counter == counter_prev || step || counter == 0 || (counter == 1 && counter_prev == SLOTS));
+            if (counter == 0 && counter_prev != 0) assert (counter_prev == SLOTS);
+            // every slot of the sweep issued (its last may issue in its last cycle: FEC now)
+            if (newsweep) assert (fec_seen || (fec && step));
             assert (!wr_twice && !wr_range_bad && !rd_range_bad && !wr_same_bank);
             assert (!wr_soon);
             assert (!wr_first);
