@@ -208,6 +208,8 @@ def graph():
         cpu_d, _ = cpu_rate(GRAPH_SCENE, order, "double")
         cpu_f, _ = cpu_rate(GRAPH_SCENE, order, "float")
         hw = f["updates_per_clock"] * mhz * 1e6 if mhz else None
+        if mhz:  # the graph's pipelined build counts for the fmax goal too
+            GOALS["fmax_graph"] = (mhz, f"{GRAPH_BUILD}{suffix} (graph_stream)")
         colours = info["COLOURS"] if info["ARCH"] else "-"
         lines.append(f"| {arch} | {info['K']} | {info['E_RODS']} | {colours} | {f['cycles_per_frame']} | "
                      f"{f['updates_per_clock_passes']:.4f} | {mhz_text} | {mega(hw)} | {mega(cpu_d)} | {mega(cpu_f)} | "
@@ -471,18 +473,20 @@ def goals_table():
                         f"pipelined: {v:.3f} M at {GOAL_ITERS} iterations, {v1:.3f} M at 1 (one constraint a clock a "
                         f"unit, less the pipe's drain each substep) | {met(v >= GOAL_PER_UNIT)} at {GOAL_ITERS}, "
                         f"{met(v1 >= GOAL_PER_UNIT)} at 1 |")
-    if "fmax" in GOALS:
-        mhz, b = GOALS["fmax"]
-        rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | the best placed pipelined build, {b}: {mhz:.1f} MHz | "
-                    f"{met(mhz >= GOAL_MHZ)} |")
+    placed = [GOALS[k] for k in ("fmax", "fmax_graph") if k in GOALS]
+    if placed:
+        mhz, b = max(placed)
+        chain = "" if "fmax" in GOALS else "; no pipelined chain placed for this RTL"
+        rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | the best placed pipelined build, {b}: {mhz:.1f} MHz"
+                    f"{chain} | {met(mhz >= GOAL_MHZ)} |")
     else:
-        rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | no pipelined build placed | **not measured** |")
+        rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | no pipelined build placed for this RTL | **not measured** |")
     if "ratio" in GOALS:
         b, ratio, mhz = GOALS["ratio"]
         rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | the largest placed pipelined chain, "
                     f"{b}, at {mhz:.1f} MHz: {ratio:.2f}x (double){GOALS.get('unplaced', '')} | {met(ratio >= GOAL_RATIO)} |")
     else:
-        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | no pipelined build placed | "
+        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | no pipelined chain placed for this RTL | "
                     "**not measured** |")
     if "stretch" in GOALS:
         subs, iters, st, at_fmax = GOALS["stretch"]
