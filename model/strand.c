@@ -733,9 +733,9 @@ static int cmd_info(int argc, char **argv)
         STRAND_DERIVED(STRAND_JSON)
 #undef STRAND_JSON
         printf("}, \"timing\": {\"toward_latency\": %ld, \"spring_latency\": %ld, \"constraint_pass\": %ld, "
-               "\"spring_pass\": %ld, \"cycles_per_frame\": %ld}}\n",
+               "\"spring_pass\": %ld, \"cycles_per_frame\": %ld, \"stream_slot_bound\": %d}}\n",
                hw_toward_latency(&hp), hw_spring_latency(&hp), hw_constraint_pass(&hp), hw_spring_pass(&hp),
-               hw_cycles_per_frame(&hp));
+               hw_cycles_per_frame(&hp), hw_stream_slot_bound(&hp) ? 1 : 0);
     } else {
         printf("%s: %s\n", sc.path, why ? why : "the RTL runs this scene with this build of strand_core:");
 #define STRAND_TEXT(NAME, name, ...) printf("  %-15s %d\n", #NAME, hp.name);

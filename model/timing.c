@@ -66,6 +66,13 @@ long hw_stream_period(const hw_params *hp)
     return slots2 > lp4 ? slots2 : lp4;
 }
 
+bool hw_stream_slot_bound(const hw_params *hp)
+{
+    /* a pipelined chain's sweeps wait for their slots, not for the pipe: NS + 2 > LP + 4 */
+    return hp->arch && !hp->graph && hp->en_constraints &&
+           stream_slots(hp) + 2 > hw_toward_pipe_latency(hp) + 4;
+}
+
 long hw_stream_last(const hw_params *hp)
 {
     /* the pass's last sweep runs until its last write (slot NS-1's, cycle NS + LP + 2) has landed */

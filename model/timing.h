@@ -6,6 +6,8 @@
 #ifndef STRAND_TIMING_H
 #define STRAND_TIMING_H
 
+#include <stdbool.h>
+
 #ifdef __cplusplus
 extern "C" {
 #endif
@@ -24,6 +26,7 @@ long hw_spring_sweep(const hw_params *hp);
    constraint passes of a substep, to its drain (SL = K/2 + LP + 4). */
 long hw_stream_period(const hw_params *hp);
 long hw_stream_last(const hw_params *hp);
+bool hw_stream_slot_bound(const hw_params *hp); /* sweep period set by the slots (NS + 2), not the pipe */
 /* One constraint pass (chain_sequencer, pair_sequencer or chain_stream), start to done, without the start cycle. */
 long hw_constraint_pass(const hw_params *hp);
 /* One spring pass, from its start cycle to its done. */

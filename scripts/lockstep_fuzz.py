@@ -125,6 +125,9 @@ PLAN = [
     {"name": "chain 2D one unit, springs without constraints, no mouse, ground +x", "GRAPH": 0, "DIM": 2,
      "EN_CONSTRAINTS": 0, "EN_SPRINGS": 1, "M": 1, "EN_MOUSE": 0, "EN_GRAVITY": 0, "EN_GROUND": 1, "GROUND_AXIS": 0,
      "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow"},
+    # K/2 + 3 > LP + 4 (LP = SQRT_BITS + DIV_BITS + 15 <= 35 at W = 12, narrow): the sweeps wait for their slots
+    {"name": "chain pipelined slot-bound K=80", "GRAPH": 0, "DIM": 2, "EN_CONSTRAINTS": 1, "ORDER": 1, "M": 2, "K": 80,
+     "W": 12, "SQRT": "narrow", "DIV": "narrow", "PROJECTION": 0, "EN_SPRINGS": 0},
 ]
 
 # Every class a run must cover: (name, what it means).
@@ -134,6 +137,8 @@ CLASSES = [
     ("chain serial", "a chain's constraints on the serial pass (order serial, ARCH = 0)"),
     ("chain pipelined", "a chain's constraints on the pipelined pass (order redblack, ARCH = 1)"),
     ("chain pipelined K=1", "the pipelined pass with one node per unit"),
+    ("chain pipelined slot-bound", "the pipelined pass with sweeps set by their slots, not the pipe's latency "
+                                   "(K/2 + 3 > LP + 4)"),
     ("previous serial", "projection = previous on the serial pass or a graph's rods"),
     ("previous pipelined", "projection = previous on a pipelined pass"),
     ("graph order serial", "a graph's rods in the scene's order (the serial pass, ARCH = 0)"),
@@ -169,39 +174,44 @@ def builds_for(seed, extra):
         plan = PLAN[i] if i < len(PLAN) else None
         for attempt in range(100):   # a draw the RTL does not build (edge word wider than W, ...) is drawn again
             b = random_build(rng, plan)
-            params = probe_params(b)
+            params, timing = probe_params(b)
             if params:
                 break
         else:
             sys.exit(f"FAIL lockstep: no RTL build drawn for {plan and plan['name']}")
         b["params"] = params
+        b["slot_bound"] = timing["stream_slot_bound"]
         b["plan"] = plan["name"] if plan else "random"
         out.append(b)
     fixed = []
     for p in FIXED_BUILDS:
         params = read_build(p)
-        fixed.append(dict(params, params=params, plan=p))
+        fixed.append(dict(params, params=params, plan=p, slot_bound=flow_hwgen.info(p)["timing"]["stream_slot_bound"]))
     return fixed + out
 
 
-def scene_info(path, why=None):
-    """strand info's parameters for a scene file, or None if the RTL does not build it (why, a list, gets the reason)."""
+def scene_info(path, why=None, timing=None):
+    """strand info's parameters for a scene file, or None if the RTL does not build it (why, a list, gets the reason;
+    timing, a dict, the build's timing: model/timing.c)."""
     try:
         info = flow_hwgen.info(path)
     except Failure as e:
         info, reason = None, str(e)
+    if timing is not None and info:
+        timing.update(info["timing"])
     if why is not None and not (info and info["rtl"]):
         why.append(info["why"] if info else reason)
     return info["params"] if info and info["rtl"] else None
 
 
 def probe_params(build):
-    """The parameters hwgen derives for the scenes of a drawn build (from its slot-0 scene), or None."""
+    """(the parameters hwgen derives for the scenes of a drawn build (from its slot-0 scene), or None; its timing)."""
     path = os.path.join(ROOT, BUILD, "fuzz", "probe.scene")
     os.makedirs(os.path.dirname(path), exist_ok=True)
     with open(path, "w") as fh:
         fh.write(scene_text(build, 0, 0)[0])
-    return scene_info(path)
+    timing = {}
+    return scene_info(path, timing=timing), timing
 
 
 def length(x):
@@ -220,7 +230,7 @@ def scene_text(build, seed, slot):
     dim = build["DIM"]
     graph = build["GRAPH"]
     facts = {"pinned_rod_end": False, "held_rod_end": False, "coincident": False, "velocity": False,
-             "order": "redblack" if build.get("ORDER") else "serial"}
+             "order": "redblack" if build.get("ORDER") else "serial", "slot_bound": bool(build.get("slot_bound"))}
     span = 2.0 ** (w - f - 1)           # the format's range is +-span
     lsb = 2.0 ** -f
     n = build["M"] * build["K"]
@@ -346,6 +356,8 @@ def classes_of(p, facts, resets=0):
             c.add("chain pipelined" if p["ARCH"] else "chain serial")
             if p["ARCH"] and p["K"] == 1:
                 c.add("chain pipelined K=1")
+            if facts.get("slot_bound"):
+                c.add("chain pipelined slot-bound")
         if p["EN_SPRINGS"]:
             c.add("chain springs")
     if rods and p["PROJECTION"]:

@@ -49,6 +49,13 @@ FAULTS = {
         ("chain_stream.v", r"^    localparam integer SP     = NS \+ 2 > LT \+ 4 \? NS \+ 2 : LT \+ 4; .*\n",
          "    localparam integer SP     = (NS + 2 > LT + 4 ? NS + 2 : LT + 4) - 1;  // planted fault: a sweep one cycle short\n"),
     ],
+    # the pipelined pass: a sweep's period from the pipe's latency alone (LT + 4), not its slots
+    # (NS + 2): on a long unit (slot-bound) the next colour starts before the sweep has issued
+    # its last slots
+    "slots_cut": [
+        ("chain_stream.v", r"^    localparam integer SP     = NS \+ 2 > LT \+ 4 \? NS \+ 2 : LT \+ 4; .*\n",
+         "    localparam integer SP     = LT + 4;  // planted fault: the period ignores the slots\n"),
+    ],
     # the pipelined pass: toward_pipe's output register bypassed (every result a cycle early)
     "bypass": [
         ("toward_pipe.v", r"^    output reg  \[DIM\*W-1:0\] out_t,", "    output wire [DIM*W-1:0] out_t,"),
@@ -87,10 +94,11 @@ FAULTS["graph_boundary"] = [
 ]
 
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
-ORDER = {"boundary": "redblack", "bypass": "redblack", "hazard": "redblack",
+ORDER = {"boundary": "redblack", "slots_cut": "redblack", "bypass": "redblack", "hazard": "redblack",
          "graph_hazard": "redblack", "graph_boundary": "redblack"}
 # The scene a fault runs on, where it is not the default chain (tb/scenes/chain_q10_8.scene).
-SCENE = {"graph_hazard": "tb/scenes/graph3d_q12.scene", "graph_boundary": "tb/scenes/graph3d_q12.scene"}
+SCENE = {"graph_hazard": "tb/scenes/graph3d_q12.scene", "graph_boundary": "tb/scenes/graph3d_q12.scene",
+         "slots_cut": "tb/scenes/chain_slot_bound.scene"}
 
 
 def plant(name, out):

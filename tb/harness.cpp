@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -299,6 +299,10 @@ bool Run::cycle(const cyc_inputs &in) {
     // the cycle the model spends in the sweep's last cycle
     if (o_.expect == "boundary" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == hw_stream_period(&hp_) - 1)
         r_.predicted_fault = cyc_;
+    // slots_cut: the first sweep ends after LP + 4 cycles where its slots need NS + 2 (a
+    // slot-bound scene), so the RTL shows the next colour in the model's cycle LP + 4
+    if (o_.expect == "slots_cut" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == model_.lp + 4)
+        r_.predicted_fault = cyc_;
     // bypass: every write of the pipelined pass lands a cycle early, so the RTL's write-back
     // lane shows the first one in the cycle in which the model writes it
     // hazard: unit 1 (streaming downward, its position 0 of colour 1) takes its even stream
@@ -489,7 +493,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -533,8 +537,8 @@ int main(int argc, char **argv) {
     }
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
-        o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary")
-        return usage("--expect-fault takes flip, delay, boundary, bypass, hazard, graph_hazard or graph_boundary");
+        o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary")
+        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard or graph_boundary");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
     if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 
