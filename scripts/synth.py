@@ -73,6 +73,9 @@ BUILDS = [
     # as the ECP5-85F's multipliers hold, two a unit for the centred rule; 8x128_pair the same
     # rope with the pairwise rule, one pipe a unit
     ("4x5_pipe", {"M": 4, "K": 5, "ARCH": 1}, "ecp5p"),
+    # one unit of the rope's kind (two distance pipes, 256 nodes in block RAM): a pipelined chain
+    # that places and routes in minutes, where the 4x5's eight pipes take an hour or more
+    ("1x256_pipe", {"M": 1, "K": 256, "ARCH": 1}, "ecp5p"),
     ("8x8_pipe", {"M": 8, "K": 8, "ARCH": 1}, "ecp5p"),
     ("16x16_pipe", {"M": 16, "K": 16, "ARCH": 1}, "ecp5p"),
     ("4x256_pipe", {"M": 4, "K": 256, "ARCH": 1}, "ecp5p"),
@@ -90,7 +93,7 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # 4x5 and the cloth go through synth_ecp5 and nextpnr; the 4x256 and the 8x128_pair through
 # synth_ecp5 and nextpnr's packing (below); the 8x8 and the 16x16 (more multipliers than the
 # device has) get generic cells only, and the report gives the multipliers they would need.
-PIPE_SEEDS = {"4x5_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [], "8x128_pair_pipe": [],
+PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [], "8x128_pair_pipe": [],
               "cloth_pipe": [1]}
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
 # but not placed and routed in make synth: the 1024-node ropes. The placement of a design that
