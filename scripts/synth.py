@@ -89,7 +89,8 @@ MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every ta
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
-# on the 4x5 pipelined build takes most of an hour, on the 1024-node builds some hours). The
+# on the 4x5 pipelined build takes an hour or more, its router congested by eight pipes in a
+# small body; the 1x256 about 7 minutes; the 1024-node builds some hours). The
 # 4x5 and the cloth go through synth_ecp5 and nextpnr; the 4x256 and the 8x128_pair through
 # synth_ecp5 and nextpnr's packing (below); the 8x8 and the 16x16 (more multipliers than the
 # device has) get generic cells only, and the report gives the multipliers they would need.
