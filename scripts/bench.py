@@ -66,20 +66,22 @@ GOALS = {}  # what physics(), rope() and springs() measured of them, for the pag
 # page from that run's measurements with make synth's results as they are later (an fmax placed
 # after the run): nothing is measured again and nothing is mixed from two runs.
 MEASURED = os.path.join(ROOT, BUILD, "bench", "measured.json")
-RUNS = {"reuse": False, "meta": {}, "out": {}}
+RUNS = {"reuse": False, "meta": {}, "out": {}, "taken": {}}  # out: command -> its outputs, in the order run
 
 
 def sh(cmd):
     key = " ".join(cmd)
-    if RUNS["reuse"]:
-        if key not in RUNS["out"]:
-            raise SystemExit(f"bench --reuse: {MEASURED} holds no run of '{key}' (run make bench)")
-        return RUNS["out"][key]
+    if RUNS["reuse"]:  # a command run several times (timed repeats) gives its outputs back in turn
+        n = RUNS["taken"].get(key, 0)
+        if n >= len(RUNS["out"].get(key, [])):
+            raise SystemExit(f"bench --reuse: {MEASURED} holds no run {n + 1} of '{key}' (run make bench)")
+        RUNS["taken"][key] = n + 1
+        return RUNS["out"][key][n]
     rc, out = run(cmd)
     if rc != 0:
         sys.stdout.write(out)
         raise SystemExit(f"bench: {' '.join(cmd)} failed")
-    RUNS["out"][key] = out
+    RUNS["out"].setdefault(key, []).append(out)
     return out
 
 
