@@ -2,7 +2,7 @@
 """bench.py - the core's physics throughput against a CPU, and simulation speed, written to
 docs/performance.md (make bench).
 
-Physics throughput: for the 4x5, 8x8, 16x16, 8x128 and 4x256 builds (tb/bench/bench_<build>.scene,
+Physics throughput: for the 4x5, 8x8, 16x16, 1x256, 8x128 and 4x256 builds (tb/bench/bench_<build>.scene,
 and the same scene with the pairwise rule) in both architectures (serial: the scene's order; pipelined: --order redblack), the
 Verilator harness runs the RTL alone and counts the cycles of each frame and of its
 constraint passes; the constraint updates of a frame (node updates of the centred rule)
@@ -40,7 +40,7 @@ from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run
 from strandflow.core import BUILD, ROOT, Failure, run  # noqa: E402
 
 BUILDS = ["4x5", "8x8", "16x16"]
-PHYS_BUILDS = ["4x5", "8x8", "16x16", "8x128", "4x256"]
+PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "8x128", "4x256"]  # 1x256: a pipelined chain make synth places
 RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene with rule = pairwise
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
