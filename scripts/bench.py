@@ -178,7 +178,7 @@ def physics():
         big = max(pipe, key=lambda r: r["nodes"] * 1000 + r["m"])
         GOALS["ratio"] = (big["build"], big["hw"] / big["cpu_d"], big["mhz"])
         notes.append(f"The largest pipelined build placed on the ECP5-85F is **{big['build']}** ({big['nodes']} nodes, "
-                     f"{big['m']} units): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
+                     f"{big['m']} unit{'s' if big['m'] > 1 else ''}): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
                      f"**{big['hw'] / big['cpu_d']:.2f}x** one CPU core in double and {big['hw'] / big['cpu_f']:.2f}x in float "
                      "(goal: 10x).")
     else:
