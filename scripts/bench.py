@@ -102,7 +102,7 @@ def rtl_figures(scene, frames, order):
                               "--order", order]))
 
 
-SYNTH = {"pnr": {}, "packs": {}}  # make synth's results for this RTL (main() fills it from synth.gather)
+SYNTH = {"pnr": {}, "packs": {}, "mults": {}}  # make synth's results for this RTL (main() fills it from synth.gather)
 
 
 def fmax_of(name):
@@ -117,6 +117,9 @@ def fmax_of(name):
                           if pack.get("fits") else "does not fit") + ", not placed"
         # placed (or packed) by make synth, but not for this RTL; or not placed at all
         run_by_synth = name in synth.BUILD_MAP and bool(synth.ecp5_steps(name))
+        need = SYNTH["mults"].get(name)
+        if not run_by_synth and need and need > synth.ECP5_85_MULTS:  # its pipes' multipliers do not fit
+            return None, f"does not fit: its pipes need {need:g} MULT18X18D, the device has {synth.ECP5_85_MULTS}"
         return None, "no make synth result for this RTL" if run_by_synth else "not placed"
     text, med = synth.fmax_cells(runs)
     return med, (f"{med:.1f}" if med is not None else text)
@@ -379,8 +382,9 @@ def main():
             raise SystemExit(f"bench --reuse: {MEASURED}: {e} (run make bench first)")
     out = args[0] if args else "docs/performance.md"
     os.chdir(ROOT)  # the RTL sources by the names make gives them (they are part of synth's keys)
-    _, SYNTH["pnr"], SYNTH["packs"], missing_steps = synth.gather(os.path.join(BUILD, "synth"), os.path.join(BUILD, "gen"),
+    res, SYNTH["pnr"], SYNTH["packs"], missing_steps = synth.gather(os.path.join(BUILD, "synth"), os.path.join(BUILD, "gen"),
                                                                    synth.rtl_sources())
+    SYNTH["mults"] = synth.pipe_mults(res)[1]
     missing = len(missing_steps)
     print(f"bench: make synth's results for this RTL taken from build/synth and its record "
           f"({missing} step(s) not run for it)", flush=True)

@@ -56,7 +56,7 @@ from strandflow.core import ROOT, Failure  # noqa: E402
 from strandflow.hwgen import param_table, table_defaults  # noqa: E402
 from strandflow.synth import (CORE_FLOWS, ECP5_ARGS, ICE40_ARGS, SYNTH_CMDS, find_top, flat_counts,  # noqa: E402
                               generic_classes, hierarchy_rows, load_stat, nextpnr_short, place, pnr_cmd, yosys,
-                              PNR_SRC, PNR_TOP, TOP, Record)
+                              PNR_EXTRA, PNR_SRC, PNR_TOP, TOP, Record)
 
 # name: (changes to the table's defaults, where it is placed). DEBUG = 0 for all.
 BUILDS = [
@@ -94,8 +94,12 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # 4x5 and the cloth go through synth_ecp5 and nextpnr; the 4x256 and the 8x128_pair through
 # synth_ecp5 and nextpnr's packing (below); the 8x8 and the 16x16 (more multipliers than the
 # device has) get generic cells only, and the report gives the multipliers they would need.
-PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [], "8x128_pair_pipe": [],
+PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [1], "8x128_pair_pipe": [],
               "cloth_pipe": [1]}
+# Builds routed by nextpnr's router2 instead of its default router1: router1 leaves a congested
+# design (many wide pipes in a small body, or a device filled to three quarters) overused for hours.
+ROUTER2 = ["4x256_pipe"]
+PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
 # but not placed and routed in make synth: the 1024-node ropes. The placement of a design that
 # fills most of the device takes about 40 minutes here, and nextpnr-ecp5's router1 needs hours
@@ -204,6 +208,26 @@ def load_pack(bdir, build, family="ecp5"):
 
 def pick(counts, pred):
     return sum(n for t, n in counts.items() if pred(t))
+
+
+ECP5_85_MULTS = 156       # MULT18X18D of the LFE5U-85F
+
+
+def pipe_count(b):
+    """The distance pipes of pipelined build b: two a unit of the centred rule, one of the pairwise."""
+    return BUILD_MAP[b][0]["M"] * (1 if BUILD_MAP[b][0].get("RULE") else 2)
+
+
+def pipe_mults(res):
+    """(MULT18X18D of one distance pipe, {pipelined build: MULT18X18D its pipes need}), from the
+    first pipelined chain gather() has synth_ecp5 cells of (its count over its pipes); (None, {})
+    when there is none. A graph's build has one pipe."""
+    chains = [b for b in PIPE if (res[b].get("ecp5") or {}).get("counts") is not None
+              and not BUILD_MAP[b][0].get("GRAPH")]
+    if not chains:
+        return None, {}
+    per_pipe = pick(res[chains[0]]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / pipe_count(chains[0])
+    return per_pipe, {b: per_pipe * (1 if BUILD_MAP[b][0].get("GRAPH") else pipe_count(b)) for b in PIPE}
 
 
 # ---- the document ----
@@ -416,11 +440,8 @@ def report(bdir, gen, out, srcs):
     placed_pipe = [b for b in PIPE if seeds_of(b)]
     # the multipliers of a distance pipe: a synthesised build's, over its pipes (a unit of the
     # centred rule has two, of the pairwise rule one)
-    pipes = lambda b: BUILD_MAP[b][0]["M"] * (1 if BUILD_MAP[b][0].get("RULE") else 2)
-    per_unit = None
     synthesised = [b for b in PIPE if counts(b, "ecp5") is not None and not BUILD_MAP[b][0].get("GRAPH")]
-    if synthesised:
-        per_unit = pick(counts(synthesised[0], "ecp5"), lambda t: t == "MULT18X18D") / pipes(synthesised[0])
+    per_unit, needs = pipe_mults(res)
     unplaced_pipe = [b for b in PIPE if not seeds_of(b) and b not in PIPE_PACK]
 
     def packed(b):
@@ -439,29 +460,31 @@ def report(bdir, gen, out, srcs):
       "one; docs/architecture.md), and a graph's (cloth_pipe: the 256-node cloth of "
       "tb/bench/graph_cloth.scene, its 480 rods streamed through one toward_pipe by graph_stream). Generic cells as "
       "above (hierarchical); "
-      + (", ".join(f"{b} (place and route: {pnr_minutes(b)})" for b in placed_pipe)
-         + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. " if placed_pipe else "")
-      + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing only (`--pack-only`), which says whether the design "
+      + (", ".join(f"{b} (place and route: {pnr_minutes(b)}{', router2' if b in ROUTER2 else ''})"
+                   for b in placed_pipe if b not in PIPE_PACK)
+         + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. "
+         if any(b not in PIPE_PACK for b in placed_pipe) else "")
+      + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing (`--pack-only`), which says whether the design "
                 f"fits the device{'' if packs[b] is None else ', and it does' if packs[b].get('fits') else ', and it does not'}: "
                 f"{packed(b)}; "
-                "it is not placed (the WebAssembly nextpnr-ecp5 places a design that fills most of the device too "
-                "slowly for make synth). "
+                + (f"then placed and routed as above (router2: {pnr_minutes(b)}). " if seeds_of(b) else
+                   "it is not placed (the WebAssembly nextpnr-ecp5 places a design that fills most of the device too "
+                   "slowly for make synth). ")
                 for b in PIPE_PACK)
       + (f"{', '.join(unplaced_pipe)}: generic cells only (a place and route of the WebAssembly nextpnr-ecp5 "
          "takes an hour or more here). " if unplaced_pipe else "")
-      + "The ECP5-85F has 156 MULT18X18D, which bounds the pipes that fit"
+      + f"The ECP5-85F has {ECP5_85_MULTS} MULT18X18D, which bounds the pipes that fit"
       + (f": a toward_pipe takes {per_unit:g} (two squares and two products of 32 x 32 bits; {synthesised[0]}'s "
-         f"count over its pipes), so at most {int(156 // per_unit)} pipes fit: {int(156 // per_unit) // 2} units of the "
-         f"centred rule, {int(156 // per_unit)} of the pairwise; the last column gives each build's pipes x "
+         f"count over its pipes), so at most {int(ECP5_85_MULTS // per_unit)} pipes fit: {int(ECP5_85_MULTS // per_unit) // 2} units of the "
+         f"centred rule, {int(ECP5_85_MULTS // per_unit)} of the pairwise; the last column gives each build's pipes x "
          f"{per_unit:g}." if per_unit else "."))
     w("")
     w("| build | generic cells | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD "
       "| fmax per seed, MHz | median | MULT18X18D needed (pipes x per pipe) |")
     w("|---|--:|--:|--:|--:|--:|--:|--:|---|---|--:|--:|")
     for b in PIPE:
-        mults = pipes(b) * per_unit if per_unit and not BUILD_MAP[b][0].get("GRAPH") else \
-            per_unit if per_unit else None
-        need = f"{mults:g}{'' if mults <= 156 else ' (over 156)'}" if mults else "-"
+        mults = needs.get(b)
+        need = f"{mults:g}{'' if mults <= ECP5_85_MULTS else f' (over {ECP5_85_MULTS})'}" if mults else "-"
         if not seeds_of(b) and b not in PIPE_PACK:
             w(f"| {b} | {total_of(b, 'generic')} | - | - | - | - | - | - | not synthesised for "
               f"the ECP5 | not placed | - | {need} |")

