@@ -90,22 +90,22 @@ UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
 # on the 4x5 pipelined build takes an hour or more, its router congested by eight pipes in a
-# small body; the 1x256 about 7 minutes; the 1024-node builds some hours). The
-# 4x5 and the cloth go through synth_ecp5 and nextpnr; the 4x256 and the 8x128_pair through
-# synth_ecp5 and nextpnr's packing (below); the 8x8 and the 16x16 (more multipliers than the
-# device has) get generic cells only, and the report gives the multipliers they would need.
+# small body; the 1x256 about 7 minutes; the 4x256 some hours, most of it placing a design that
+# fills three quarters of the device). The 4x5, the 1x256, the 4x256 and the cloth go through
+# synth_ecp5 and nextpnr; the 8x128_pair through synth_ecp5 and nextpnr's packing (below); the
+# 8x8 and the 16x16 (more multipliers than the device has) get generic cells only, and the
+# report gives the multipliers they would need.
 PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [1], "8x128_pair_pipe": [],
               "cloth_pipe": [1]}
-# Builds routed by nextpnr's router2 instead of its default router1: router1 leaves a congested
-# design (many wide pipes in a small body, or a device filled to three quarters) overused for hours.
-ROUTER2 = ["4x256_pipe"]
+# Builds routed by nextpnr's router2 instead of its default router1: router1 left these
+# congested designs (eight wide pipes in a small body; a device filled to three quarters) with
+# tens of thousands of overused wires after an hour, ripping up about as many arcs as it routed.
+ROUTER2 = ["4x5_pipe", "4x256_pipe"]
 PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
-# Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured)
-# but not placed and routed in make synth: the 1024-node ropes. The placement of a design that
-# fills most of the device takes about 40 minutes here, and nextpnr-ecp5's router1 needs hours
-# more to resolve its congestion, so their route would end hours after the rest of make synth.
-# `synth.py pnr BUILD` places and routes one alone; make synth then takes its figures from the
-# record.
+# Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured):
+# whether the 1024-node ropes fit, in a minute. The 8x128_pair is not placed in make synth
+# (`synth.py pnr BUILD` places one alone once its seed is listed above; make synth then takes
+# its figures from the record).
 PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe"]
 # The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
 # where the cells of a unit of the largest build go.
