@@ -56,7 +56,7 @@ from strandflow.core import ROOT, Failure  # noqa: E402
 from strandflow.hwgen import param_table, table_defaults  # noqa: E402
 from strandflow.synth import (CORE_FLOWS, ECP5_ARGS, ICE40_ARGS, SYNTH_CMDS, find_top, flat_counts,  # noqa: E402
                               generic_classes, hierarchy_rows, load_stat, nextpnr_short, place, pnr_cmd, yosys,
-                              PNR_EXTRA, PNR_SRC, PNR_TOP, TOP, Record)
+                              PNR_BUDGET, PNR_EXTRA, PNR_SRC, PNR_TOP, TOP, Record)
 
 # name: (changes to the table's defaults, where it is placed). DEBUG = 0 for all.
 BUILDS = [
@@ -102,6 +102,9 @@ PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "8x8_pipe": [], "16x16_pipe": 
 # still had 157,000 of 227,000 arcs to route after an hour, ripping up about as many as it routed.
 ROUTER2 = ["4x5_pipe", "4x256_pipe"]
 PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
+# Their place and route has a budget (seconds): make synth ends in hours, and a run stopped at its
+# budget is reported as not finished, with how far it got.
+PNR_BUDGET.update({"4x5_pipe": 2400, "4x256_pipe": 3000})
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured):
 # whether the 1024-node ropes fit, in a minute. The 8x128_pair is not placed in make synth
 # (`synth.py pnr BUILD` places one alone once its seed is listed above; make synth then takes
@@ -257,6 +260,8 @@ def critical_lines(builds, pnr):
 
 def fmax_cells(runs):
     """(per-seed text, median or None) of a build's place-and-route runs."""
+    if any(r.get("stopped") for r in runs):
+        return "not routed: " + [r for r in runs if r.get("stopped")][0]["stopped"], None
     if not all(r.get("fits") for r in runs):
         bad = [r for r in runs if not r.get("fits")][0]
         over = bad.get("over", {})

@@ -41,6 +41,10 @@ RECORD = os.path.join(ROOT, "docs", "synth_record.json")
 # Arguments some builds add to nextpnr's (scripts/synth.py fills it: the builds whose routing
 # router1 does not finish), by build name; they are part of the command, so of its keys.
 PNR_EXTRA = {}
+# Time budgets of some builds' place and route, in seconds, by build name (scripts/synth.py fills
+# it): a run that has not ended by then is stopped, and its result is that it did not finish
+# (how far it got: placing, or routing with so many wires still overused), not a failure.
+PNR_BUDGET = {}
 
 # Latch cell types, before and after techmapping.
 LATCH_SEL = "t:$dlatch* t:$adlatch* t:$_DLATCH*"
@@ -170,7 +174,7 @@ def portable_key(ys, ver, files, gen):
 
 def pnr_portable_key(family, seed, ver, place_key, build=None):
     """seed None: the packing-only step."""
-    return digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed, build)), ver, place_key)
+    return digest(pnr_key_text(family, seed, build), ver, place_key)
 
 
 def pnr_step(family, seed):
@@ -303,6 +307,26 @@ def pnr_cmd(family, seed, build=None):
     return [tool] + args + run + ["--json", f"{family}.json"]
 
 
+def pnr_budget(build, seed):
+    """The seconds a place and route of build may take (TIMEOUT unless PNR_BUDGET names it)."""
+    return TIMEOUT if seed is None else PNR_BUDGET.get(build, TIMEOUT)
+
+
+def pnr_key_text(family, seed, build):
+    """What a place and route's key covers of its command: the arguments, and a budget if it has one."""
+    budget = "" if seed is None or build not in PNR_BUDGET else f" budget {PNR_BUDGET[build]} s"
+    return " ".join(os.path.basename(c) for c in pnr_cmd(family, seed, build)) + budget
+
+
+def unfinished(text, secs):
+    """The result of a place and route stopped at its budget: how far it got."""
+    overused = re.findall(r"overused=(\d+)", text)
+    routing = re.search(r"^Info: (Running router2|Routing\.\.)", text, re.M)
+    stage = (f"while routing ({int(overused[-1]):,} wires still overused)" if routing and overused
+             else "while routing" if routing else "while placing")
+    return dict(fits=True, finished=False, fmax_mhz=None, stopped=f"stopped after {secs / 60:.0f} min {stage}")
+
+
 def pnr_outcome(text, rc):
     """Parse a nextpnr log: fits or not, utilisation, post-route fmax of the clock."""
     util = {}
@@ -348,7 +372,7 @@ def place(d, family, seed, build, record=None, offline=False):
         raise Failure(f"{tool} not found (make bootstrap installs it)")
     with open(os.path.join(d, f"{family}_place.ok")) as f:
         place_stamp = json.load(f)
-    key = digest(" ".join(os.path.basename(c) for c in pnr_cmd(family, seed, build)), ver, place_stamp["key"])
+    key = digest(pnr_key_text(family, seed, build), ver, place_stamp["key"])
     step = pnr_step(family, seed)
     stamp = os.path.join(d, f"{step}.ok")
     name = f"{build}/{step}"
@@ -399,14 +423,18 @@ def place(d, family, seed, build, record=None, offline=False):
         if os.path.exists(stamp):
             os.remove(stamp)
         log = os.path.join(d, f"{step}.log")
-        rc, secs, cpu = run_logged(pnr_cmd(family, seed, build), d, log, TIMEOUT)
-        outcome = pnr_outcome(open(log).read(), rc)
+        budget = pnr_budget(build, seed)
+        rc, secs, cpu = run_logged(pnr_cmd(family, seed, build), d, log, budget)
+        text = open(log).read()
+        outcome = unfinished(text, secs) if rc < 0 and build in PNR_BUDGET and secs >= budget \
+            else pnr_outcome(text, rc)
         if outcome["fits"] is None:
             raise Failure(f"{build} nextpnr-{family} {step}: {outcome['error']} (log: {log})")
         extra = dict(tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1), rc=rc, **outcome)
         write_stamp(stamp, key, **extra)
         keep(extra)
-        return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit")
+        return f"{secs:.0f} s" + ("" if outcome["fits"] else ", does not fit") + \
+            (", " + outcome["stopped"] if outcome.get("stopped") else "")
     finally:
         os.remove(lock)
 
