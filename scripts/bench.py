@@ -109,12 +109,15 @@ def fmax_of(name):
     """(median MHz or None, text) of make synth's ECP5-85F runs of build `name`, for this RTL only
     (a result of other sources left in build/synth does not count)."""
     runs = (SYNTH["pnr"].get(name) or {}).get("ecp5")
+    pack = SYNTH["packs"].get(name)
+    packs = None
+    if pack is not None:  # a build make synth packs: whether it fits
+        comb = pack.get("util", {}).get("TRELLIS_COMB")
+        packs = ("packs into the device" + (f" ({100 * comb[0] / comb[1]:.0f} % of TRELLIS_COMB)" if comb else "")
+                 if pack.get("fits") else "does not fit")
     if runs is None:
-        pack = SYNTH["packs"].get(name)
-        if pack is not None:  # a build make synth packs but does not place: whether it fits
-            comb = pack.get("util", {}).get("TRELLIS_COMB")
-            return None, ("packs into the device" + (f" ({100 * comb[0] / comb[1]:.0f} % of TRELLIS_COMB)" if comb else "")
-                          if pack.get("fits") else "does not fit") + ", not placed"
+        if packs is not None:  # packed but not placed
+            return None, packs + ", not placed"
         # placed (or packed) by make synth, but not for this RTL; or not placed at all
         run_by_synth = name in synth.BUILD_MAP and bool(synth.ecp5_steps(name))
         need = SYNTH["mults"].get(name)
@@ -122,7 +125,7 @@ def fmax_of(name):
             return None, f"does not fit: its pipes need {need:g} MULT18X18D, the device has {synth.ECP5_85_MULTS}"
         return None, "no make synth result for this RTL" if run_by_synth else "not placed"
     text, med = synth.fmax_cells(runs)
-    return med, (f"{med:.1f}" if med is not None else text)
+    return med, (f"{med:.1f}" if med is not None else text + (f"; {packs}" if packs else ""))
 
 
 def cpu_rate(scene, order, kind):
@@ -174,7 +177,7 @@ def physics():
     # the largest placed pipelined build against the CPU, and the rope
     pipe = [r for r in rows if r["arch"] == "pipelined" and r["hw"]]
     bigger = [r for r in rows if r["arch"] == "pipelined" and not r["hw"]
-              and pipe and r["nodes"] > max(x["nodes"] for x in pipe) and "packs into" in r["mhz_text"]]
+              and pipe and r["nodes"] > max(x["nodes"] for x in pipe) and "packs into" in r["mhz_text"]]  # (placed or not)
     if bigger:  # a larger build fits the device but has no fmax: the ratio above is not the largest's
         GOALS["unplaced"] = "; " + ", ".join(f"{r['build']} {r['mhz_text']}" for r in bigger)
     if pipe:
