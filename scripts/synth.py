@@ -103,7 +103,9 @@ PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "8x8_pipe": [], "16x16_pipe": 
 ROUTER2 = ["4x5_pipe", "4x256_pipe"]
 PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
 # Their place and route has a budget (seconds): make synth ends in hours, and a run stopped at its
-# budget is reported as not finished, with how far it got.
+# budget is reported as not finished, with how far it got. That result is kept in the record like
+# any other (the budget is part of its key): to try again, on a faster machine or with a native
+# nextpnr-ecp5, raise the budget here.
 PNR_BUDGET.update({"4x5_pipe": 2400, "4x256_pipe": 3000})
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured):
 # whether the 1024-node ropes fit, in a minute. The 8x128_pair is not placed in make synth
