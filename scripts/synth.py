@@ -459,7 +459,8 @@ def report(bdir, gen, out, srcs):
                          if n in ("TRELLIS_COMB", "TRELLIS_FF", "MULT18X18D", "DP16KD"))
 
     def pnr_minutes(b):
-        return ", ".join(f"{r['seconds'] / 60:.0f} min" for r in pnr[b]["ecp5"] if r.get("seconds")) \
+        return ", ".join(f"{r['seconds'] / 60:.0f} min" + (", stopped at its budget: not finished" if r.get("stopped") else "")
+                         for r in pnr[b]["ecp5"] if r.get("seconds")) \
             if pnr[b].get("ecp5") else NOT_RUN
 
     w("The same builds with the pipelined constraint pass (chain_stream: every unit takes one constraint a clock, a "
@@ -467,14 +468,14 @@ def report(bdir, gen, out, srcs):
       "one; docs/architecture.md), and a graph's (cloth_pipe: the 256-node cloth of "
       "tb/bench/graph_cloth.scene, its 480 rods streamed through one toward_pipe by graph_stream). Generic cells as "
       "above (hierarchical); "
-      + (", ".join(f"{b} (place and route: {pnr_minutes(b)}{', router2' if b in ROUTER2 else ''})"
+      + (", ".join(f"{b} (place and route{' with router2' if b in ROUTER2 else ''}: {pnr_minutes(b)})"
                    for b in placed_pipe if b not in PIPE_PACK)
          + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. "
          if any(b not in PIPE_PACK for b in placed_pipe) else "")
       + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing (`--pack-only`), which says whether the design "
                 f"fits the device{'' if packs[b] is None else ', and it does' if packs[b].get('fits') else ', and it does not'}: "
                 f"{packed(b)}; "
-                + (f"then placed and routed as above (router2: {pnr_minutes(b)}). " if seeds_of(b) else
+                + (f"then placed and routed as above (router2; {pnr_minutes(b)}). " if seeds_of(b) else
                    "it is not placed (the WebAssembly nextpnr-ecp5 places a design that fills most of the device too "
                    "slowly for make synth). ")
                 for b in PIPE_PACK)
