@@ -10,11 +10,15 @@
  * datapath can round it (fx_round) in a stage of its own.
  *
  * Algorithm: each operand splits at H = ceil(W/2) into a signed high part and an
- * unsigned low part, a = aH 2^H + aL; the four partial products aH bH, aH bL, aL bH,
- * aL bL (each at most 17 x 17 bits signed at W = 32: one 18 x 18 multiplier block
- * each) are registered, then summed with their weights 2^2H, 2^H, 2^H, 1 and the sum
- * registered. Splitting is what lets a 32 x 32 product run at a multiplier block's own
- * speed: one block and its routing in the first stage, the adders in the second.
+ * unsigned low part, a = aH 2^H + aL. Three products, not four (Karatsuba):
+ *     hh = aH bH,   ll = aL bL,   m = (aH + aL)(bH + bL)
+ * give the middle term aH bL + aL bH = m - hh - ll. At W = 32 the parts are 16 bits
+ * and their sums 18 bits signed, so each product is one 18 x 18 multiplier block: a
+ * product takes three blocks, not the four of the schoolbook split (aH bH, aH bL, aL bH,
+ * aL bL). The three are registered, then summed as hh 2^2H + (m - hh - ll) 2^H + ll and
+ * the sum registered. Splitting is what lets a 32 x 32 product run at a multiplier
+ * block's own speed: the part sums and one block in the first stage, the adders in the
+ * second. Every step is exact, so prod is a * b bit for bit.
  *
  * Latency: operands on the inputs in cycle 0 give prod in cycle 2. Throughput one
  * product per clock. No reset.
@@ -35,26 +39,29 @@ module fx_mul_pipe #(
 
     wire signed [HW-1:0] a_hi = a[W-1:H];
     wire signed [HW-1:0] b_hi = b[W-1:H];
-    wire signed [H:0]    a_lo = {1'b0, a[H-1:0]};  // unsigned, as a non-negative signed value
-    wire signed [H:0]    b_lo = {1'b0, b[H-1:0]};
+    wire        [H-1:0]  a_lo = a[H-1:0];  // unsigned
+    wire        [H-1:0]  b_lo = b[H-1:0];
+    // aH + aL lies in [-2^(HW-1), 2^(HW-1) - 1 + 2^H - 1]: H + 2 bits signed (HW <= H)
+    wire signed [H+1:0]  a_sum = {{(H+2-HW){a_hi[HW-1]}}, a_hi} + {2'b00, a_lo};
+    wire signed [H+1:0]  b_sum = {{(H+2-HW){b_hi[HW-1]}}, b_hi} + {2'b00, b_lo};
 
-    // stage 1: the partial products
-    reg signed [2*HW-1:0] hh;
-    reg signed [HW+H:0]   hl, lh;
-    reg signed [2*H+1:0]  ll;
+    // stage 1: the three products
+    reg signed [2*HW-1:0]  hh;
+    reg        [2*H-1:0]   ll;   // unsigned
+    reg signed [2*H+3:0]   m;
     always @(posedge clk) begin
         hh <= a_hi * b_hi;
-        hl <= a_hi * b_lo;
-        lh <= a_lo * b_hi;
         ll <= a_lo * b_lo;
+        m  <= a_sum * b_sum;
     end
 
-    // stage 2: their weighted sum (every term sign-extended to 2W bits)
-    wire signed [2*W-1:0] hh_w = {{(2*W-2*HW){hh[2*HW-1]}}, hh};
-    wire signed [2*W-1:0] hl_w = {{(2*W-HW-H-1){hl[HW+H]}}, hl};
-    wire signed [2*W-1:0] lh_w = {{(2*W-HW-H-1){lh[HW+H]}}, lh};
-    wire signed [2*W-1:0] ll_w = {{(2*W-2*H-2){ll[2*H+1]}}, ll};
-    always @(posedge clk) prod <= (hh_w <<< (2 * H)) + ((hl_w + lh_w) <<< H) + ll_w;
+    // stage 2: the middle term m - hh - ll (|aH bL + aL bH| < 2^(HW+H)) and the weighted
+    // sum, every term sign-extended to 2W bits
+    wire signed [2*W-1:0] hh_w  = {{(2*W-2*HW){hh[2*HW-1]}}, hh};
+    wire signed [2*W-1:0] ll_w  = {{(2*W-2*H){1'b0}}, ll};
+    wire signed [2*W-1:0] m_w   = {{(2*W-2*H-4){m[2*H+3]}}, m};
+    wire signed [2*W-1:0] mid_w = m_w - hh_w - ll_w;
+    always @(posedge clk) prod <= (hh_w <<< (2 * H)) + (mid_w <<< H) + ll_w;
 
 endmodule
 

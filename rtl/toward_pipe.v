@@ -19,10 +19,10 @@
  * restoring digit-by-digit root and divide of fx_sqrt and fx_div unrolled into one
  * stage per resolved bit (so SQRT_BITS and DIV_BITS stay the accuracy knobs, and the
  * results are those of the serial datapath bit for bit). Every other step has a
- * stage of its own, so no path holds more than one multiplier block, one 2W-bit sum,
- * one root or divide stage, the rounding or one W-bit add: the W x W multiplies are
- * fx_mul_pipe (partial products, then their sum). The multipliers are not shared: DIM
- * for the squares, DIM for the products.
+ * stage of its own, so no path holds more than a half-word sum and one multiplier
+ * block, one 2W-bit sum, one root or divide stage, the rounding or one W-bit add: the
+ * W x W multiplies are fx_mul_pipe (three partial products, then their sum). The
+ * multipliers are not shared: DIM for the squares, DIM for the products.
  *
  * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
  *   1 d = C - P            2, 3 the squares        4 their sum (the radicand)
