@@ -106,7 +106,7 @@ PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
 # budget is reported as not finished, with how far it got. That result is kept in the record like
 # any other (the budget is part of its key): to try again, on a faster machine or with a native
 # nextpnr-ecp5, raise the budget here.
-PNR_BUDGET.update({"4x5_pipe": 2400, "4x256_pipe": 3000})
+PNR_BUDGET.update({"4x5_pipe": 5400, "4x256_pipe": 5400})
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured):
 # whether the 1024-node ropes fit, in a minute. The 8x128_pair is not placed in make synth
 # (`synth.py pnr BUILD` places one alone once its seed is listed above; make synth then takes
