@@ -322,7 +322,11 @@ def unfinished(text, secs):
     """The result of a place and route stopped at its budget: how far it got."""
     overused = re.findall(r"overused=(\d+)", text)
     routing = re.search(r"^Info: (Running router2|Routing\.\.)", text, re.M)
+    # router1 prints its arcs to route, then rows "iteration | routed ripped | ... | arcs left|"
+    arcs = re.findall(r"^Info: Routing (\d+) arcs\.", text, re.M)
+    left = re.findall(r"^Info:\s+\d+ \|\s+\d+\s+\d+ \|\s+\d+\s+\d+ \|\s+(\d+)\|", text, re.M)
     stage = (f"while routing ({int(overused[-1]):,} wires still overused)" if routing and overused
+             else f"while routing ({int(left[-1]):,} of {int(arcs[-1]):,} arcs still to route)" if routing and arcs and left
              else "while routing" if routing else "while placing")
     return dict(fits=True, finished=False, fmax_mhz=None, stopped=f"stopped after {secs / 60:.0f} min {stage}")
 
