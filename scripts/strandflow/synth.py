@@ -14,7 +14,8 @@ post-route figure for the clock.
 The record (docs/synth_record.json, tracked) keeps what the reports read of every step
 make synth ran: a flow's cells per module and a place and route's outcome, each under a
 key that does not depend on where the checkout lies (the script with the paths taken out,
-the tool's version, the sources' contents). A step whose local stamp is missing takes its
+the tool's version, the contents of the headers and of the sources that define a module
+of the build's elaborated hierarchy: elaborated_sources()). A step whose local stamp is missing takes its
 result from the record when the keys agree, so a fresh checkout of unchanged RTL has make
 synth's figures without hours of Yosys and nextpnr, and a long run stopped half-way keeps
 what it finished. A *_place flow is taken from the record only when every seed of its place
@@ -172,6 +173,51 @@ def portable_key(ys, ver, files, gen):
     return digest(text, ver, *sums)
 
 
+MODULE_DEF = re.compile(r"^\s*module\s+([A-Za-z_]\w*)", re.M)
+
+
+def elaborated_sources(d, flow, params_, gen, srcs, ver):
+    """The files of srcs (and tb/pnr_wrap.v for a *_place flow) that define a module of the
+    hierarchy Yosys elaborates for this flow's top and parameters: the only .v files that can
+    change its result, so the only ones its record key covers (a change to the pipelined
+    datapath leaves the serial builds' results standing). Macros live in the .vh headers,
+    which every key covers whole (gen_files). Yosys's `hierarchy` finds the modules; the result
+    is cached in d under a digest of every source, the parameters and the tool."""
+    top = PNR_TOP if flow.endswith("_place") else TOP
+    files = list(srcs) + ([PNR_SRC] if top == PNR_TOP else [])
+    text = (yosys_script(flow, params_, gen, srcs, "elaboration").splitlines()[1:4]
+            + [f"tee -q -o elab_{top}.txt ls"])
+    key = digest("\n".join(text), ver, file_digest(files + gen_files(gen)))
+    cache = os.path.join(d, f"elab_{top}.json")
+    if stamp_fresh(cache, key):
+        with open(cache) as f:
+            return [os.path.join(ROOT, r) for r in json.load(f)["files"]]
+    with open(os.path.join(d, f"elab_{top}.ys"), "w") as f:
+        f.write("\n".join(text) + "\n")
+    rc, _, _ = run_logged(["yosys", "-q", "-l", f"elab_{top}.log", f"elab_{top}.ys"], d, os.devnull, TIMEOUT)
+    if rc != 0:
+        raise Failure(f"{d} {flow}: {yosys_failure(os.path.join(d, f'elab_{top}.log'))}")
+    with open(os.path.join(d, f"elab_{top}.txt")) as f:
+        used = {base_name(ln.strip()) for ln in f if ln.startswith("  ")}
+    defined = {}
+    for path in files:
+        with open(path) as f:
+            for mod in MODULE_DEF.findall(f.read()):
+                defined.setdefault(mod, path)
+    missing = sorted(used - set(defined))
+    if missing:
+        raise Failure(f"{d} {flow}: no source defines {', '.join(missing)}")
+    out = [p for p in files if p in {defined[m] for m in used}]
+    write_stamp(cache, key, files=[os.path.relpath(p, ROOT) for p in out])
+    return out
+
+
+def record_key(d, flow, params_, gen, srcs, ver, title):
+    """A flow's key in the record: its script, the tool, the headers and the sources it elaborates."""
+    ys = yosys_script(flow, params_, gen, srcs, title)
+    return portable_key(ys, ver, elaborated_sources(d, flow, params_, gen, srcs, ver) + gen_files(gen), gen)
+
+
 def pnr_portable_key(family, seed, ver, place_key, build=None):
     """seed None: the packing-only step."""
     return digest(pnr_key_text(family, seed, build), ver, place_key)
@@ -246,7 +292,7 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
     stamp = os.path.join(d, f"{flow}.ok")
     stat = os.path.join(d, f"{flow}.stat.json")
     name = f"{os.path.basename(os.path.normpath(d))}/{flow}"
-    pkey = portable_key(ys, ver, files, gen) if record is not None else None
+    pkey = record_key(d, flow, params_, gen, srcs, ver, title) if record is not None else None
 
     def keep(extra):
         if record is not None:
