@@ -40,7 +40,7 @@ from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run
 from strandflow.core import BUILD, ROOT, Failure, run  # noqa: E402
 
 BUILDS = ["4x5", "8x8", "16x16"]
-PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "2x256", "3x256", "8x128", "4x256"]  # 1x256..3x256: pipelined chains make synth places
+PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "2x256", "8x128", "4x256"]  # 1x256, 2x256: pipelined chains make synth places
 RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene with rule = pairwise
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
