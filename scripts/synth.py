@@ -815,7 +815,7 @@ def check_key_scope(a, tmp):
     one added to a source it does elaborate changes it."""
     copies = os.path.join(tmp, "rtl")
     os.makedirs(copies)
-    srcs = [shutil.copy(s, copies) for s in a.srcs]
+    srcs = [os.path.abspath(shutil.copy(s, copies)) for s in a.srcs]
     d = os.path.join(tmp, "k")
     os.makedirs(d)
     ver = tool_version("yosys")

@@ -191,7 +191,7 @@ def elaborated_sources(d, flow, params_, gen, srcs, ver):
     cache = os.path.join(d, f"elab_{top}.json")
     if stamp_fresh(cache, key):
         with open(cache) as f:
-            return [os.path.join(ROOT, r) for r in json.load(f)["files"]]
+            return [os.path.normpath(os.path.join(ROOT, r)) for r in json.load(f)["files"]]
     with open(os.path.join(d, f"elab_{top}.ys"), "w") as f:
         f.write("\n".join(text) + "\n")
     rc, _, _ = run_logged(["yosys", "-q", "-l", f"elab_{top}.log", f"elab_{top}.ys"], d, os.devnull, TIMEOUT)
@@ -207,7 +207,7 @@ def elaborated_sources(d, flow, params_, gen, srcs, ver):
     missing = sorted(used - set(defined))
     if missing:
         raise Failure(f"{d} {flow}: no source defines {', '.join(missing)}")
-    out = [p for p in files if p in {defined[m] for m in used}]
+    out = [os.path.abspath(p) for p in files if p in {defined[m] for m in used}]  # as the cache gives them
     write_stamp(cache, key, files=[os.path.relpath(p, ROOT) for p in out])
     return out
 
