@@ -50,8 +50,9 @@ UNITS_DEPS_mul_pipe := rtl/fx_round.v
 UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
 UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
 
-# Icarus configurations: name:unit:mode:W:F:BITS (F is ignored by add/avg/sqrt,
-# BITS by add/mul/avg; BITS is SQRT_BITS or DIV_BITS).
+# Icarus configurations: name:unit:mode:W:F:BITS[:STEPS] (F is ignored by add/avg/sqrt,
+# BITS by add/mul/avg; BITS is SQRT_BITS or DIV_BITS; STEPS, the pipelined root's and
+# divider's iterations a stage, 1 unless given).
 UNITS_ICARUS_TESTS := \
     fx_add_w8_exhaustive:add:exhaustive:8:4:7 \
     fx_add_w32_random:add:random:32:16:31 \
@@ -84,12 +85,20 @@ UNITS_ICARUS_TESTS := \
     fx_sqrt_pipe_w18_b17_random:sqrt_pipe:random:18:8:17 \
     fx_sqrt_pipe_w32_b31_random:sqrt_pipe:random:32:16:31 \
     fx_sqrt_pipe_w32_b8_random:sqrt_pipe:random:32:16:8 \
+    fx_sqrt_pipe_w8_b7_s2_exhaustive:sqrt_pipe:exhaustive:8:4:7:2 \
+    fx_sqrt_pipe_w8_b6_s3_exhaustive:sqrt_pipe:exhaustive:8:4:6:3 \
+    fx_sqrt_pipe_w32_b31_s2_random:sqrt_pipe:random:32:16:31:2 \
+    fx_sqrt_pipe_w32_b30_s4_random:sqrt_pipe:random:32:16:30:4 \
     fx_div_pipe_w8_f4_b7_exhaustive:div_pipe:exhaustive:8:4:7 \
     fx_div_pipe_w8_f6_b3_exhaustive:div_pipe:exhaustive:8:6:3 \
     fx_div_pipe_w8_f1_b7_exhaustive:div_pipe:exhaustive:8:1:7 \
     fx_div_pipe_w32_f16_b31_random:div_pipe:random:32:16:31 \
     fx_div_pipe_w32_f16_b8_random:div_pipe:random:32:16:8 \
-    fx_div_pipe_w32_f30_b31_random:div_pipe:random:32:30:31
+    fx_div_pipe_w32_f30_b31_random:div_pipe:random:32:30:31 \
+    fx_div_pipe_w8_f4_b7_s2_exhaustive:div_pipe:exhaustive:8:4:7:2 \
+    fx_div_pipe_w8_f6_b6_s3_exhaustive:div_pipe:exhaustive:8:6:6:3 \
+    fx_div_pipe_w32_f16_b31_s2_random:div_pipe:random:32:16:31:2 \
+    fx_div_pipe_w32_f16_b30_s4_random:div_pipe:random:32:16:30:4
 
 # Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM (module is toward,
 # toward_pipe, spring_force or spring_force_pipe; its testbench is tb/tb_<module>.v; DIM 2 or 3: in 3D the
@@ -118,9 +127,9 @@ UNITS_PARAMS_mul  = -Ptb_fx_mul.W=$(1) -Ptb_fx_mul.F=$(2)
 UNITS_PARAMS_avg  = -Ptb_fx_avg.W=$(1)
 UNITS_PARAMS_sqrt = -Ptb_fx_sqrt.W=$(1) -Ptb_fx_sqrt.SQRT_BITS=$(3)
 UNITS_PARAMS_div  = -Ptb_fx_div.W=$(1) -Ptb_fx_div.F=$(2) -Ptb_fx_div.DIV_BITS=$(3)
-UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3)
+UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3) -Ptb_fx_sqrt_pipe.STEPS=$(or $(4),1)
 UNITS_PARAMS_mul_pipe  = -Ptb_fx_mul_pipe.W=$(1) -Ptb_fx_mul_pipe.F=$(2)
-UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3)
+UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3) -Ptb_fx_div_pipe.STEPS=$(or $(4),1)
 # the pipelined units take the vectors of the iterative ones: the same function
 UNITS_GEN_UNIT_sqrt_pipe := sqrt
 UNITS_GEN_UNIT_mul_pipe  := mul
@@ -151,7 +160,7 @@ $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 	$(UNITS_CC) $(UNITS_CFLAGS) -o $@ $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_ROOT)/model/fixed.c -lm
 
 # One Icarus test: vectors (cached), simulator (cached), and a run (always).
-# $(1) name, $(2) unit, $(3) mode, $(4) W, $(5) F, $(6) BITS
+# $(1) name, $(2) unit, $(3) mode, $(4) W, $(5) F, $(6) BITS, $(7) STEPS (may be empty)
 define UNITS_ICARUS_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 	@mkdir -p $$(dir $$@)
@@ -159,7 +168,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v $(addprefix $(UNITS_ROOT)/,$(UNITS_DEPS_$(2))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6),$(7)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -168,7 +177,7 @@ units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
 units-icarus: units-run-$(1)
 endef
 
-$(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
+$(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
 
 # ---- the datapaths: toward, spring_force ----
 UNITS_DP_UNITS := fx_add fx_mul fx_round fx_sqrt fx_div
