@@ -13,3 +13,18 @@ endfunction
 function integer div_pipe_latency(input integer bits, input integer steps);
     div_pipe_latency = (bits + steps) / steps + 1;
 endfunction
+
+// The distance and spring pipes (each module's header counts its stages; model/timing.c
+// hw_toward_pipe_latency and hw_spring_pipe_latency): an operation on the inputs in
+// cycle 0 has its result in cycle LATENCY.
+function integer toward_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps);
+    toward_pipe_latency = sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 11;
+endfunction
+
+function integer toward_prev_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps);
+    toward_prev_pipe_latency = 2 * sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 28;
+endfunction
+
+function integer spring_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps);
+    spring_pipe_latency = sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 20;
+endfunction

@@ -100,7 +100,7 @@ UNITS_ICARUS_TESTS := \
     fx_div_pipe_w32_f16_b31_s2_random:div_pipe:random:32:16:31:2 \
     fx_div_pipe_w32_f16_b30_s4_random:div_pipe:random:32:16:30:4
 
-# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM (module is toward,
+# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM[:STEPS] (module is toward,
 # toward_pipe, spring_force or spring_force_pipe; its testbench is tb/tb_<module>.v; DIM 2 or 3: in 3D the
 # radicand, a sum of three squares, reaches classes a sum of two never does).
 UNITS_DP_TESTS := \
@@ -113,13 +113,16 @@ UNITS_DP_TESTS := \
     toward_pipe_w16_f8_s4_d6:toward_pipe:16:8:4:6:2 \
     toward_pipe_3d_w32_f16_s31_d31:toward_pipe:32:16:31:31:3 \
     toward_pipe_3d_w16_f8_s4_d6:toward_pipe:16:8:4:6:3 \
+    toward_pipe_w32_f16_s31_d31_x2:toward_pipe:32:16:31:31:2:2 \
+    toward_pipe_3d_w16_f8_s4_d6_x3:toward_pipe:16:8:4:6:3:3 \
     spring_force_w32_f16_s31_d31:spring_force:32:16:31:31:2 \
     spring_force_w12_f6_s8_d9:spring_force:12:6:8:9:2 \
     spring_force_3d_w32_f16_s31_d31:spring_force:32:16:31:31:3 \
     spring_force_3d_w12_f6_s8_d9:spring_force:12:6:8:9:3 \
     spring_force_pipe_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:2 \
     spring_force_pipe_w12_f6_s8_d9:spring_force_pipe:12:6:8:9:2 \
-    spring_force_pipe_3d_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:3
+    spring_force_pipe_3d_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:3 \
+    spring_force_pipe_w32_f16_s31_d31_x2:spring_force_pipe:32:16:31:31:2:2
 
 # Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
 UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
@@ -206,15 +209,16 @@ $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/
 	    $(addprefix $(UNITS_ROOT)/model/,fixed.c engine_fixed.c scene.c timing.c) $(UNITS_INIH) -lm
 
 # One datapath test: vectors (cached), simulator (cached), and a run (always).
-# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS, $(7) DIM
+# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS, $(7) DIM, $(8) STEPS (may be
+# empty: 1; the pipes only)
 define UNITS_DP_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $$@ > $$@.n
+	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $(8) $$@ > $$@.n
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(8),-Ptb_$(2).STEPS=$(8)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -223,7 +227,7 @@ units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
 units-datapaths: units-run-$(1)
 endef
 
-$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
+$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))),$(word 8,$(subst :, ,$(t))))))
 
 # Every configuration's vectors (make mutate runs the benches on mutated copies of the RTL).
 units-vectors: $(foreach t,$(UNITS_ICARUS_TESTS) $(UNITS_DP_TESTS),$(UNITS_BUILD)/$(word 1,$(subst :, ,$(t)))/vectors.hex)
