@@ -90,6 +90,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
        (scene_set_order), stream colour by colour (graph_stream), its springs take the serial pass */
     hp->arch = (hp->en_constraints || (hp->en_springs && !hp->graph)) && sc->order == ORDER_REDBLACK;
     hp->colours = hp->arch && hp->graph ? sc->n_colours : 1;
+    hp->pipe_steps = hp->arch ? sc->pipe_steps : 1; /* the pipes' stages: nothing else reads it */
     if (hp->e_rods < 1) hp->e_rods = 1; /* the memories' sizes: at least one entry (unused in a chain) */
     if (hp->e_springs < 1) hp->e_springs = 1;
     hp->en_ground = sc->en_ground;

@@ -365,6 +365,7 @@ static int handler(void *user, const char *section, const char *key, const char 
         if (!strcmp(key, "frac")) return parse_int(p, key, value, 1, FX_MAX_WIDTH - 2, &sc->fmt.frac);
         if (!strcmp(key, "sqrt_bits")) return parse_int(p, key, value, 1, FX_MAX_WIDTH - 1, &sc->fmt.sqrt_bits);
         if (!strcmp(key, "div_bits")) return parse_int(p, key, value, 1, FX_MAX_WIDTH - 1, &sc->fmt.div_bits);
+        if (!strcmp(key, "pipe_steps")) return parse_int(p, key, value, 1, 4, &sc->pipe_steps);
         break;
     case S_TIME:
         if (!strcmp(key, "dt")) return parse_double(p, key, value, 1e-9, 1e6, &sc->dt);
@@ -678,6 +679,7 @@ static bool finish(parser *p)
     /* format */
     if (!key_line(p, S_FORMAT, "sqrt_bits")) sc->fmt.sqrt_bits = sc->fmt.width - 1;
     if (!key_line(p, S_FORMAT, "div_bits")) sc->fmt.div_bits = sc->fmt.width - 1;
+    if (!key_line(p, S_FORMAT, "pipe_steps")) sc->pipe_steps = 1;
     if ((msg = fx_format_check(&sc->fmt))) {
         const char *key = sc->fmt.frac > sc->fmt.width - 2 ? "frac" : sc->fmt.sqrt_bits > sc->fmt.width - 1 ? "sqrt_bits" : "div_bits";
         if (!key_line(p, S_FORMAT, key)) key = "width"; /* a default no longer fits the width */

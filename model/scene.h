@@ -73,6 +73,8 @@ typedef struct {
     int frames; /* default run length */
     int substeps;
     int iterations; /* constraint iterations per substep */
+    int pipe_steps; /* the pipelined root's and divider's iterations a stage ([format] pipe_steps;
+                       timing only: hw_params.pipe_steps of a pipelined build) */
     integrator_kind integrator;
     double damping; /* Verlet: x+ = x + (1-d)(x - x-) + a dt^2 */
 

@@ -15,15 +15,27 @@ long hw_toward_latency(const hw_params *hp)
     return hp->sqrt_bits + hp->div_bits + 2L * hp->dim + 10;
 }
 
+/* fx_sqrt_pipe.v and fx_div_pipe.v (rtl/pipe_latency.vh): a load stage, BITS + 1 iterations
+   PIPE_STEPS to a stage, a rounding stage; BITS + 2 with one iteration a stage */
+long hw_sqrt_pipe_latency(const hw_params *hp)
+{
+    return (hp->sqrt_bits + hp->pipe_steps) / hp->pipe_steps + 1L;
+}
+
+long hw_div_pipe_latency(const hw_params *hp)
+{
+    return (hp->div_bits + hp->pipe_steps) / hp->pipe_steps + 1L;
+}
+
 long hw_toward_pipe_latency(const hw_params *hp)
 {
     if (hp->projection) /* toward_prev_pipe.v: q and r, r's squares and their sum, the root, the DIM unit
                            divides, q.u (products, rounding, two sums), s u and p, p.p and rest^2 (products,
                            sum, difference), the leg's root, leg u, o, T, the choice into the output registers */
-        return 2L * hp->sqrt_bits + hp->div_bits + 34;
-    /* toward_pipe.v: d, the squares (two stages), their sum, the root (SQRT_BITS + 3), the
-       divide (DIV_BITS + 3), the products (two stages), their rounding, T, the output register */
-    return hp->sqrt_bits + hp->div_bits + 15L;
+        return 2L * hw_sqrt_pipe_latency(hp) + hw_div_pipe_latency(hp) + 28;
+    /* toward_pipe.v: d, the squares (two stages), their sum, the root and the divide (each its
+       latency and a register), the products (two stages), their rounding, T, the output register */
+    return hw_sqrt_pipe_latency(hp) + hw_div_pipe_latency(hp) + 11L;
 }
 
 long hw_spring_pipe_latency(const hw_params *hp)
@@ -32,7 +44,7 @@ long hw_spring_pipe_latency(const hw_params *hp)
        (SQRT_BITS + 3), the DIM divides side by side (DIV_BITS + 3), u signed, the vn products (two
        stages) and their rounding, vn summed (two stages), ks (len - rest) and kd vn (two stages),
        their sum, f rounded, the forces (two stages), their rounding into the output register */
-    return hp->sqrt_bits + hp->div_bits + 24L;
+    return hw_sqrt_pipe_latency(hp) + hw_div_pipe_latency(hp) + 20L;
 }
 
 long hw_spring_sweep(const hw_params *hp)
@@ -128,12 +140,15 @@ long hw_cycles_per_frame(const hw_params *hp)
 
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
-    char pipe[128] = "", last[96] = "";
+    char pipe[320] = "", last[96] = "", steps[160] = "";
+    if (hp->arch) /* the pipes' root and divider: LSQ and LDV, BITS + 2 with one iteration a stage */
+        snprintf(steps, sizeof steps, "; LSQ = ceil((SQRT_BITS + 1) / PIPE_STEPS) + 1 = %ld, LDV = ceil((DIV_BITS + 1) / PIPE_STEPS) + 1 = %ld",
+                 hw_sqrt_pipe_latency(hp), hw_div_pipe_latency(hp));
     if (chain_streams(hp) && hp->en_constraints) /* the pass's last sweep runs to its drain */
         snprintf(last, sizeof last, "; a substep's last sweep SL = K/2 + LP + 4 = %ld", hw_stream_last(hp));
     if (hp->arch && hp->en_constraints)
-        snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
-                 hp->projection ? "2 SQRT_BITS + DIV_BITS + 34" : "SQRT_BITS + DIV_BITS + 15", hw_toward_pipe_latency(hp));
+        snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld%s\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
+                 hp->projection ? "2 LSQ + LDV + 28" : "LSQ + LDV + 11", hw_toward_pipe_latency(hp), steps);
     return snprintf(out, (size_t)len,
                     "%s latency LT = %s = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
@@ -149,7 +164,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     : hp->arch        ? "2 sweeps of SP = max(K/2 + 3, LP + 4) (pipelined)"
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
-                    chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = SQRT_BITS + DIV_BITS + 24 (pipelined)" : "1 + links (LS + 5)",
+                    chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)" : "1 + links (LS + 5)",
                     hw_spring_pass(hp), chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes",
                     verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));

@@ -14,7 +14,12 @@ extern "C" {
 
 /* toward.v: start to done (the distance datapath of the constraints). */
 long hw_toward_latency(const hw_params *hp);
-/* toward_pipe.v: an operation on its inputs in cycle 0 is on its outputs in this cycle. */
+/* fx_sqrt_pipe.v, fx_div_pipe.v (rtl/pipe_latency.vh): operands sampled at edge e give their
+   result after edge e + this (ceil((BITS + 1) / PIPE_STEPS) + 1). */
+long hw_sqrt_pipe_latency(const hw_params *hp);
+long hw_div_pipe_latency(const hw_params *hp);
+/* toward_pipe.v (toward_prev_pipe.v with PROJECTION): an operation on its inputs in cycle 0 is
+   on its outputs in this cycle. */
 long hw_toward_pipe_latency(const hw_params *hp);
 /* spring_force.v: start to done. */
 long hw_spring_latency(const hw_params *hp);

@@ -100,8 +100,9 @@ module chain_stream #(
 
     localparam integer DW     = DIM * W;
     localparam integer NB     = 2 * DW + 1;                    // a node's bundle: {pin, prev, pos}
-    localparam integer LT     = PROJECTION ? 2 * SQRT_BITS + DIV_BITS + 34   // toward_prev_pipe's latency
-                                           : SQRT_BITS + DIV_BITS + 15;      // toward_pipe's
+`include "pipe_latency.vh"
+    localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS)
+                                           : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS);
     localparam integer PJ     = (K + 1) / 2;                   // pairs read a sweep
     localparam integer NS     = K / 2 + 1;                     // slots a sweep
     localparam [0:0]   K_EVEN = K % 2 == 0;
@@ -296,13 +297,13 @@ module chain_stream #(
                 wire [TAG_W-1:0] u_tag, d_tag;
                 /* verilator lint_off PINCONNECTEMPTY */
                 // the centred rule's points: nothing is carried
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                             .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_up (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_up[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_up[DW +: DW]), .in_pc(node[DW +: DW]),
                     .in_rest(rest_len), .in_tag({j, !even_p, up_ex, 1'b0, pin}),
                     .out_valid(u_valid), .out_t(u_t), .out_ok(u_ok), .out_tag(u_tag), .out_p(), .out_c());
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                             .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_down (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_dn[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_dn[DW +: DW]), .in_pc(node[DW +: DW]),
@@ -341,7 +342,7 @@ module chain_stream #(
                 wire             o_valid, o_ok;
                 wire [DW-1:0]    o_t, o_p, o_c;
                 wire [TAG_W-1:0] o_tag;
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                             .CARRY(1'b1), .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b1),
                     .in_p(a[0 +: DW]), .in_c(b[0 +: DW]), .in_pp(a[DW +: DW]), .in_pc(b[DW +: DW]),

@@ -7,9 +7,10 @@
  * dist_pipe - the pipelined distance datapath of a build: toward_pipe, or with
  * PROJECTION toward_prev_pipe (the correction along the constraint's direction at the
  * substep's start). One operation a clock; its result LATENCY cycles later
- * (model/timing.c hw_toward_pipe_latency):
- *     toward_pipe       SQRT_BITS + DIV_BITS + 15
- *     toward_prev_pipe  2 SQRT_BITS + DIV_BITS + 34
+ * (pipe_latency.vh, model/timing.c hw_toward_pipe_latency; LSQ and LDV the root's and the
+ * dividers' latencies, SQRT_BITS + 2 and DIV_BITS + 2 with STEPS = 1):
+ *     toward_pipe       LSQ + LDV + 11       (STEPS = 1: SQRT_BITS + DIV_BITS + 15)
+ *     toward_prev_pipe  2 LSQ + LDV + 28     (STEPS = 1: 2 SQRT_BITS + DIV_BITS + 34)
  * The ports are toward_prev_pipe's; without PROJECTION the previous positions (in_pp,
  * in_pc) are not used. See those two modules for the arithmetic.
  */
@@ -18,6 +19,7 @@ module dist_pipe #(
     parameter integer F          = 16,
     parameter integer SQRT_BITS  = W - 1,
     parameter integer DIV_BITS   = W - 1,
+    parameter integer STEPS      = 1,     // root and divide iterations a pipeline stage
     parameter integer DIM        = 2,
     parameter integer TAG_W      = 1,
     parameter [0:0]   CARRY      = 1'b0,  // 1: P and C come out beside T (out_p, out_c)
@@ -44,13 +46,13 @@ module dist_pipe #(
 
     generate
         if (PROJECTION) begin : g_previous
-            toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+            toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
                                .CARRY(CARRY), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
                 .in_p(in_p), .in_c(in_c), .in_pp(in_pp), .in_pc(in_pc), .in_rest(in_rest), .in_tag(in_tag),
                 .out_valid(out_valid), .out_t(out_t), .out_ok(out_ok), .out_tag(out_tag), .out_p(out_p), .out_c(out_c));
         end else begin : g_current
-            toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(TAG_W),
+            toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
                           .CARRY(CARRY), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
                 .in_p(in_p), .in_c(in_c), .in_rest(in_rest), .in_tag(in_tag),

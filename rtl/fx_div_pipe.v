@@ -9,23 +9,28 @@
  * Computes exactly what fx_div (and fx_div() of model/fixed.c) computes:
  * round(num * 2^F / den) for unsigned W-bit num and den, rounded at the last resolved
  * bit, saturated to 2^(W-1)-1, with div_by_zero for den = 0. The algorithm is
- * fx_div's, its DIV_BITS + 1 iterations unrolled into as many pipeline stages, and a
- * stage for the rounding; the iteration itself is the one of fx_div_step.vh, which
- * fx_div uses too.
+ * fx_div's, its DIV_BITS + 1 iterations unrolled, STEPS of them to a pipeline stage, and
+ * a stage for the rounding; the iteration itself is the one of fx_div_step.vh, which
+ * fx_div uses too. STEPS trades the clock for latency and registers: each stage's path
+ * holds STEPS subtracters in a row, and the stages (so the registers that carry the
+ * remainder, the divisor and the quotient bits) are STEPS times fewer.
  *
  * Ports:   num, den  unsigned W bits (Q(W-F).F read as unsigned), sampled every edge.
  *          result, div_by_zero, sat: as fx_div's.
- * Latency: operands sampled at edge e give their result after edge e + DIV_BITS + 2
- *          (a load stage, DIV_BITS + 1 iteration stages, the rounding stage): one more
- *          than fx_div's start-to-done.
+ * Latency: operands sampled at edge e give their result after edge e + LAT, LAT =
+ *          ceil((DIV_BITS + 1) / STEPS) + 1 (pipe_latency.vh div_pipe_latency): a load
+ *          stage, the iteration stages, the rounding stage. With STEPS = 1, DIV_BITS + 2:
+ *          one more than fx_div's start-to-done.
  * Throughput: one quotient per clock. No reset; the caller keeps its valid bits.
  * Cost: DIV_BITS + 1 subtracters of W + 2 bits and, per stage, the partial remainder,
  *       the divisor, the quotient bits so far and the dividend bits still to come.
+ *       The last stage holds the iterations left over (1 .. STEPS).
  */
 module fx_div_pipe #(
     parameter integer W        = 32,   // total width in bits, 8..32
     parameter integer F        = 16,   // fraction bits, 1..W-2
-    parameter integer DIV_BITS = W - 1 // quotient magnitude bits resolved, 1..W-1
+    parameter integer DIV_BITS = W - 1, // quotient magnitude bits resolved, 1..W-1
+    parameter integer STEPS    = 1      // iterations a pipeline stage, 1..4
 ) (
     input  wire         clk,
     input  wire [W-1:0] num,         // unsigned dividend, Q(W-F).F
@@ -39,6 +44,7 @@ module fx_div_pipe #(
     `STRAND_CHECK(F_must_be_1_to_W_minus_2, F >= 1 && F <= W - 2, ("fx_div_pipe: F must be 1..W-2 (W=%0d F=%0d) in %m", W, F))
     `STRAND_CHECK(DIV_BITS_must_be_1_to_W_minus_1, DIV_BITS >= 1 && DIV_BITS <= W - 1,
                   ("fx_div_pipe: DIV_BITS must be 1..W-1 (W=%0d DIV_BITS=%0d) in %m", W, DIV_BITS))
+    `STRAND_CHECK(STEPS_must_be_1_to_4, STEPS >= 1 && STEPS <= 4, ("fx_div_pipe: STEPS must be 1..4 (STEPS=%0d) in %m", STEPS))
 
     localparam integer M   = W - 1;               // magnitude bits of the quotient
     localparam integer FS  = (F < 1) ? 1 : (F > W - 2) ? W - 2 : F;                // F, clamped
@@ -46,18 +52,20 @@ module fx_div_pipe #(
     localparam integer NIT = DB + 1;              // iterations: pipeline stages
     localparam integer LSB = M - DB;              // weight of the last resolved bit
     localparam integer XB  = (NIT < M) ? NIT : M; // dividend bits fed in
+    localparam integer SPS = (STEPS < 1) ? 1 : STEPS; // iterations a stage, clamped
 
 `include "fx_div_step.vh"
 
-    // stage s = 0 (the load) .. NIT-1: x (the dividend bits to come, top first), acc (the
-    // partial remainder), den, q (the quotient bits so far), big (the quotient does not
-    // fit, or den = 0) and dbz (den = 0)
-    wire [XB-1:0]  x_s   [0:NIT-1];
-    wire [W-1:0]   acc_s [0:NIT-1];
-    wire [W-1:0]   den_s [0:NIT-1];
-    wire [NIT-1:0] q_s   [0:NIT-1];
-    wire           big_s [0:NIT-1];
-    wire           dbz_s [0:NIT-1];
+    // after iteration s = 0 (the load) .. NIT-1: x (the dividend bits to come, top first),
+    // acc (the partial remainder), den, q (the quotient bits so far), big (the quotient does
+    // not fit, or den = 0) and dbz (den = 0); registered when s is a multiple of SPS (split_var: with
+    // STEPS > 1 an element is made of the one before it, which Verilator would take for a loop)
+    wire [XB-1:0]  x_s   [0:NIT-1] /* verilator split_var */;
+    wire [W-1:0]   acc_s [0:NIT-1] /* verilator split_var */;
+    wire [W-1:0]   den_s [0:NIT-1] /* verilator split_var */;
+    wire [NIT-1:0] q_s   [0:NIT-1] /* verilator split_var */;
+    wire           big_s [0:NIT-1] /* verilator split_var */;
+    wire           dbz_s [0:NIT-1] /* verilator split_var */;
 
     wire [W-1:0] acc_init = num >> (M - FS);            // floor(num * 2^F / 2^M)
     wire [M-1:0] low_bits = num[M-1:0] << FS;           // dividend bits M-1 .. 0
@@ -86,7 +94,15 @@ module fx_div_pipe #(
         for (s = 1; s <= NIT; s = s + 1) begin : g_stage
             wire [W:0]     step   = div_step(acc_s[s-1], x_s[s-1][XB-1], den_s[s-1]);
             wire [NIT-1:0] q_next = {q_s[s-1][NIT-2:0], step[W]};
-            if (s < NIT) begin : g_iter
+            if (s < NIT && s % SPS != 0) begin : g_chain
+                // an iteration inside a stage: straight on to the next one
+                assign x_s[s]   = x_s[s-1] << 1;
+                assign acc_s[s] = step[W-1:0];
+                assign den_s[s] = den_s[s-1];
+                assign q_s[s]   = q_next;
+                assign big_s[s] = big_s[s-1];
+                assign dbz_s[s] = dbz_s[s-1];
+            end else if (s < NIT) begin : g_iter
                 reg [XB-1:0]  x_q;
                 reg [W-1:0]   acc_q, den_q;
                 reg [NIT-1:0] q_q;

@@ -18,7 +18,7 @@
  * ok = 0 when len = 0 (the dividers' divide-by-zero flag): no force.
  *
  * Algorithm: the root and the dividers are fx_sqrt_pipe and fx_div_pipe (the digit-by-
- * digit root and divide of fx_sqrt and fx_div, one stage per resolved bit, so SQRT_BITS
+ * digit root and divide of fx_sqrt and fx_div, STEPS resolved bits a stage, so SQRT_BITS
  * and DIV_BITS stay the accuracy knobs and the results are spring_force's bit for bit).
  * DIM dividers run side by side (one per component of u); every multiply is an
  * fx_mul_pipe of its own (DIM squares, DIM vn products, ks and kd, DIM forces). Values
@@ -26,15 +26,17 @@
  *
  * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
  *   1 d, v_a, v_b        2 dv; |d| and the signs; the squares start (two cycles)
- *   4 their sum          5 .. the root: len there in T_LEN = SQRT_BITS + 8
+ *   4 their sum          5 .. the root: len there in T_LEN = LSQ + 6
  *   T_LEN                the dividers start; len - rest
- *   T_U = T_LEN + DIV_BITS + 3   the quotients; u.k, signed, registered
+ *   T_U = T_LEN + LDV + 1        the quotients; u.k, signed, registered
  *   T_U + 1              the vn products start    T_U + 3  rounded
  *   T_U + 4, + 5         vn summed in axis order  T_U + 6  ks (len - rest) and kd vn start
  *   T_U + 8              their exact sum          T_U + 9  f rounded
  *   T_U + 10             the forces start         T_U + 12 rounded, on the outputs at T_U + 13
- * LATENCY = SQRT_BITS + DIV_BITS + 24 (model/timing.c hw_spring_pipe_latency): an operation
- * on the inputs in cycle 0 has out_valid, out_f, out_ok and out_tag in cycle LATENCY.
+ * LSQ and LDV are the root's and the dividers' latencies (pipe_latency.vh: with STEPS = 1,
+ * SQRT_BITS + 2 and DIV_BITS + 2). LATENCY = LSQ + LDV + 20, SQRT_BITS + DIV_BITS + 24 with
+ * STEPS = 1 (model/timing.c hw_spring_pipe_latency): an operation on the inputs in cycle 0
+ * has out_valid, out_f, out_ok and out_tag in cycle LATENCY.
  * Throughput one spring per clock. ks and kd come with each spring and ride beside it.
  *
  * Ports: a, a_p, b, b_p, out_f are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W);
@@ -46,6 +48,7 @@ module spring_force_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer STEPS     = 1,      // root and divide iterations a pipeline stage
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter integer BLOCK_MIN = 64      // delay rings: strand_ram's block RAM threshold
@@ -71,9 +74,16 @@ module spring_force_pipe #(
     `STRAND_CHECK(spring_force_pipe_DIM, DIM == 2 || DIM == 3, ("spring_force_pipe: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
     localparam integer DW      = DIM * W;
-    localparam integer T_LEN   = SQRT_BITS + 8;          // len on the root's output
-    localparam integer T_U     = T_LEN + DIV_BITS + 3;   // the quotients on the dividers' outputs
+`include "pipe_latency.vh"
+    localparam integer LSQ     = sqrt_pipe_latency(SQRT_BITS, STEPS);
+    localparam integer LDV     = div_pipe_latency(DIV_BITS, STEPS);
+    localparam integer T_LEN   = LSQ + 6;                // len on the root's output
+    localparam integer T_U     = T_LEN + LDV + 1;        // the quotients on the dividers' outputs
     localparam integer LATENCY = T_U + 13;
+    // the spring stream times its writes by pipe_latency.vh: it must count these stages
+    `STRAND_CHECK(spring_force_pipe_latency_formula, LATENCY == spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS),
+                  ("spring_force_pipe: its stages (%0d) and pipe_latency.vh (%0d) disagree in %m", LATENCY,
+                   spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS)))
 
     // ---- the valid bits: bit i is the operation in cycle i + 1 ----
     reg [LATENCY-1:0] v_q;
@@ -123,7 +133,7 @@ module spring_force_pipe #(
         radicand5 <= sq4[0 +: 2*W] + sq4[2*W +: 2*W] + (DIM == 3 ? sq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
     wire [W-1:0] len;
     /* verilator lint_off PINCONNECTEMPTY */
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // rings from cycle 2: |d|, rest, ks and kd to T_LEN; dv and the signs to T_U
@@ -142,7 +152,7 @@ module spring_force_pipe #(
     /* verilator lint_off PINCONNECTEMPTY */
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_div
-            fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
+            fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
                 .clk(clk), .num(dabs_len[k*W +: W]), .den(len), .result(qmag[k*W +: W]), .div_by_zero(dz[k]), .sat());
         end
     endgenerate

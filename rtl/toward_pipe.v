@@ -26,13 +26,15 @@
  *
  * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
  *   1 d = C - P            2, 3 the squares        4 their sum (the radicand)
- *   5 .. SQRT_BITS + 7     the root (fx_sqrt_pipe)
- *   SQRT_BITS + 8 ..       the quotient (fx_div_pipe)
- *   SQRT_BITS + DIV_BITS + 11, + 12  the products d * r      + 13  their rounding
- *   SQRT_BITS + DIV_BITS + 14        T                       + 15  on the outputs
- * LATENCY = SQRT_BITS + DIV_BITS + 15 (model/timing.c hw_toward_pipe_latency): an
- * operation on the inputs in cycle 0 has out_valid, out_t, out_ok and out_tag in cycle
- * LATENCY. Throughput one operation per clock; no operation waits for another.
+ *   5 .. LSQ + 5           the root (fx_sqrt_pipe, latency LSQ)
+ *   LSQ + 6 ..             the quotient (fx_div_pipe, latency LDV)
+ *   LSQ + LDV + 7, + 8     the products d * r      + 9   their rounding
+ *   LSQ + LDV + 10         T                       + 11  on the outputs
+ * LSQ = ceil((SQRT_BITS + 1) / STEPS) + 1 and LDV = ceil((DIV_BITS + 1) / STEPS) + 1
+ * (pipe_latency.vh), so LATENCY = LSQ + LDV + 11, SQRT_BITS + DIV_BITS + 15 with
+ * STEPS = 1 (model/timing.c hw_toward_pipe_latency): an operation on the inputs in
+ * cycle 0 has out_valid, out_t, out_ok and out_tag in cycle LATENCY. Throughput one
+ * operation per clock; no operation waits for another.
  *
  * P, d, rest and the caller's tag (and C, with CARRY) ride beside the root and the
  * divider in delay_line rings (LUT or block RAM), not in a register per stage.
@@ -46,6 +48,7 @@ module toward_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer STEPS     = 1,      // root and divide iterations a pipeline stage
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter [0:0]   CARRY     = 1'b0,   // 1: P and C come out beside T (out_p, out_c)
@@ -70,11 +73,18 @@ module toward_pipe #(
     `STRAND_CHECK(toward_pipe_W, W >= 8 && W <= 32, ("toward_pipe: W must be 8..32 (W=%0d) in %m", W))
     `STRAND_CHECK(toward_pipe_DIM, DIM == 2 || DIM == 3, ("toward_pipe: DIM must be 2 or 3 (DIM=%0d) in %m", DIM))
 
-    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 15;
-    localparam integer T_DIV   = SQRT_BITS + 8;             // cycle the divider's operands are on its inputs
-    localparam integer T_MUL   = SQRT_BITS + DIV_BITS + 11; // cycle the quotient is there
+`include "pipe_latency.vh"
+    localparam integer LSQ     = sqrt_pipe_latency(SQRT_BITS, STEPS);
+    localparam integer LDV     = div_pipe_latency(DIV_BITS, STEPS);
+    localparam integer LATENCY = LSQ + LDV + 11;
+    localparam integer T_DIV   = LSQ + 6;                   // cycle the divider's operands are on its inputs
+    localparam integer T_MUL   = LSQ + LDV + 7;             // cycle the quotient is there
     localparam integer CW_     = CARRY ? DIM * W : 1;       // C in the ring (CARRY), else one unused bit
     localparam integer SIDE_W  = CW_ + TAG_W + 1 + 2 * DIM * W;   // [C], tag, excess, P, d
+    // the streams time their writes by pipe_latency.vh: it must count these stages
+    `STRAND_CHECK(toward_pipe_latency_formula, LATENCY == toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS),
+                  ("toward_pipe: its stages (%0d) and pipe_latency.vh (%0d) disagree in %m", LATENCY,
+                   toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS)))
 
     // ---- the valid bits: bit i is the operation in cycle i + 1 ----
     reg [LATENCY-1:0] v_q;
@@ -141,8 +151,8 @@ module toward_pipe #(
     wire         dz;
     /* verilator lint_off PINCONNECTEMPTY */
     // saturation flags: the saturated value is the result
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
-    fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) u_div (
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
+    fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
         .clk(clk), .num(rest_div), .den(len), .result(ratio), .div_by_zero(dz), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 

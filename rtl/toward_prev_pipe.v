@@ -24,15 +24,17 @@
  *
  * Stages, counting the cycle in which an operation is on the inputs as cycle 0:
  *   1 q, r        2 |r|, the signs; r's squares start      4 their sum
- *   5 ..          lr, there in T_L = SQRT_BITS + 8: the dividers start
- *   T_U = T_L + DIV_BITS + 3   u_k signed, registered
+ *   5 ..          lr, there in T_L = LSQ + 6: the dividers start
+ *   T_U = T_L + LDV + 1        u_k signed, registered
  *   T_U + 1       q_k u_k start     T_U + 3 rounded     T_U + 4, + 5 s summed in axis order
  *   T_U + 6       s u_k start       T_U + 8 rounded     T_U + 9 p_k = q_k - s u_k
  *   T_U + 10      p_k^2 and rest^2 start; T_U + 12 p.p; T_U + 13 miss and rest^2 - p.p
- *   T_U + 14 ..   the leg, there in T_G = T_U + SQRT_BITS + 17
+ *   T_U + 14 ..   the leg, there in T_G = T_U + LSQ + 15
  *   T_G           leg u_k start     T_G + 2 rounded     T_G + 3 o_k     T_G + 4 T_k
  *   T_G + 5       T or the fallback's, into the output registers
- * LATENCY = T_G + 6 = 2 SQRT_BITS + DIV_BITS + 34 (model/timing.c hw_toward_pipe_latency
+ * LSQ and LDV are the root's and the dividers' latencies (pipe_latency.vh: with
+ * STEPS = 1, SQRT_BITS + 2 and DIV_BITS + 2). LATENCY = T_G + 6 = 2 LSQ + LDV + 28,
+ * 2 SQRT_BITS + DIV_BITS + 34 with STEPS = 1 (model/timing.c hw_toward_pipe_latency
  * with PROJECTION): an operation on the inputs in cycle 0 has out_valid, out_t, out_ok,
  * out_tag (and out_p, out_c with CARRY) in cycle LATENCY. Throughput one a clock.
  *
@@ -43,6 +45,7 @@ module toward_prev_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer STEPS     = 1,      // root and divide iterations a pipeline stage
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter [0:0]   CARRY     = 1'b0,   // 1: P and C come out beside T (out_p, out_c)
@@ -71,13 +74,20 @@ module toward_prev_pipe #(
 
     localparam integer DW      = DIM * W;
     localparam integer UF      = W - 2;                    // fraction bits of a unit component
-    localparam integer T_L     = SQRT_BITS + 8;
-    localparam integer T_U     = T_L + DIV_BITS + 3;
-    localparam integer T_G     = T_U + SQRT_BITS + 17;
+`include "pipe_latency.vh"
+    localparam integer LSQ     = sqrt_pipe_latency(SQRT_BITS, STEPS);
+    localparam integer LDV     = div_pipe_latency(DIV_BITS, STEPS);
+    localparam integer T_L     = LSQ + 6;
+    localparam integer T_U     = T_L + LDV + 1;
+    localparam integer T_G     = T_U + LSQ + 15;
     localparam integer LATENCY = T_G + 6;
-    localparam integer LP0     = SQRT_BITS + DIV_BITS + 15;  // the fallback toward_pipe's
+    localparam integer LP0     = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);  // the fallback toward_pipe's
     localparam integer CW_     = CARRY ? DW : 1;
     localparam integer OUT_W   = CW_ + TAG_W + 1 + 2 * DW;   // [C], tag, excess, P, q
+    // the streams time their writes by pipe_latency.vh: it must count these stages
+    `STRAND_CHECK(toward_prev_pipe_latency_formula, LATENCY == toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, STEPS),
+                  ("toward_prev_pipe: its stages (%0d) and pipe_latency.vh (%0d) disagree in %m", LATENCY,
+                   toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, STEPS)))
 
     // ---- the valid bits ----
     reg [LATENCY-1:0] v_q;
@@ -91,7 +101,7 @@ module toward_prev_pipe #(
     wire [DW-1:0] cur_t, cur_t_g;
     /* verilator lint_off PINCONNECTEMPTY */
     // its valid, tag, P and C come with this pipe's own
-    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(1),
+    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(1),
                   .BLOCK_MIN(BLOCK_MIN)) u_cur (
         .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
         .in_p(in_p), .in_c(in_c), .in_rest(in_rest), .in_tag(1'b0),
@@ -161,7 +171,7 @@ module toward_prev_pipe #(
         rad5 <= rsq4[0 +: 2*W] + rsq4[2*W +: 2*W] + (DIM == 3 ? rsq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
     wire [W-1:0] lr;
     /* verilator lint_off PINCONNECTEMPTY */
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt_r (.clk(clk), .radicand(rad5), .result(lr), .sat());
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt_r (.clk(clk), .radicand(rad5), .result(lr), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- T_L: the unit dividers; lr = 0 says the start direction has none ----
@@ -169,7 +179,7 @@ module toward_prev_pipe #(
     /* verilator lint_off PINCONNECTEMPTY */
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_div
-            fx_div_pipe #(.W(W), .F(UF), .DIV_BITS(DIV_BITS)) u_div (
+            fx_div_pipe #(.W(W), .F(UF), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
                 .clk(clk), .num(rabs_l[k*W +: W]), .den(lr), .result(umag[k*W +: W]), .div_by_zero(), .sat());
         end
     endgenerate
@@ -269,7 +279,7 @@ module toward_prev_pipe #(
     // ---- T_U + 14 .. T_G: the leg ----
     wire [W-1:0] leg;
     /* verilator lint_off PINCONNECTEMPTY */
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) u_sqrt_leg (.clk(clk), .radicand(rad14), .result(leg), .sat());
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt_leg (.clk(clk), .radicand(rad14), .result(leg), .sat());
     /* verilator lint_on PINCONNECTEMPTY */
 
     // ---- T_G: leg u_k; T_G + 3: o_k; T_G + 4: T_k; T_G + 5: T or the fallback's ----

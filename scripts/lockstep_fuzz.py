@@ -99,6 +99,9 @@ def random_build(rng, plan=None):
         b["GROUND_AXIS"] = 1
     b["ARCH"] = b["ORDER"] and b["EN_CONSTRAINTS"]
     b["PROJECTION"] = bool(b["PROJECTION"] and b["EN_CONSTRAINTS"])
+    # the pipes' root and divide iterations a stage, drawn from the build itself rather than rng,
+    # so that the builds drawn after this one stay what they were before PIPE_STEPS existed
+    b["PIPE_STEPS"] = (plan or {}).get("PIPE_STEPS") or random.Random(repr(sorted(b.items()))).choice([1, 1, 2, 3, 4])
     return b
 
 
@@ -111,10 +114,10 @@ PLAN = [
      "SQRT": "narrow", "DIV": "full", "ITER": 3, "EN_DAMPING": 1, "W": 16},
     {"name": "chain 3D pairwise pipelined, springs, grab, ground +z", "GRAPH": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "RULE": 1,
      "ORDER": 1, "M": 3, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_SPRINGS": 1, "EN_GROUND": 1, "GROUND_AXIS": 2,
-     "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow", "W": 32, "SUBSTEPS": 2},
+     "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow", "W": 32, "SUBSTEPS": 2, "PIPE_STEPS": 2},
     {"name": "graph 3D rods pipelined and springs, grab, ground -y", "GRAPH": 1, "ORDER": 1, "DIM": 3, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 1,
      "M": 2, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_GROUND": 1, "GROUND_AXIS": 1, "GROUND_ABOVE": 0, "SQRT": "full", "DIV": "full",
-     "EN_GRAVITY": 1, "W": 24},
+     "EN_GRAVITY": 1, "W": 24, "PIPE_STEPS": 3},
     {"name": "graph 2D rods, previous projection, impulse, no gravity", "GRAPH": 1, "ORDER": 0, "DIM": 2,
      "EN_CONSTRAINTS": 1, "EN_SPRINGS": 0,
      "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 0, "SQRT": "narrow", "DIV": "narrow", "EN_GRAVITY": 0, "W": 20,
@@ -141,6 +144,7 @@ CLASSES = [
                                    "(K/2 + 3 > LP + 4)"),
     ("previous serial", "projection = previous on the serial pass or a graph's rods"),
     ("previous pipelined", "projection = previous on a pipelined pass"),
+    ("pipe steps>1", "a pipelined pass whose root and dividers take several iterations a stage (PIPE_STEPS > 1)"),
     ("graph order serial", "a graph's rods in the scene's order (the serial pass, ARCH = 0)"),
     ("graph order redblack", "a graph's rods by colour on the pipelined pass (graph_stream, ARCH = 1)"),
     ("graph colours>1", "a pipelined graph whose rods take several colours (drains between them)"),
@@ -246,6 +250,7 @@ def scene_text(build, seed, slot):
     frames = rng.randint(3, 10)
     lines = [f"; random scene, seed {seed}", "[scene]", f"name = fuzz_{seed}", f"dim = {dim}",
              "[format]", f"width = {w}", f"frac = {f}", f"sqrt_bits = {build['SQRT_BITS']}", f"div_bits = {build['DIV_BITS']}",
+             f"pipe_steps = {build.get('PIPE_STEPS', 1)}",
              "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['SUBSTEPS']}", f"iterations = {build['ITER']}"]
     if build["EN_DAMPING"]:
         lines.append(f"damping = {rng.uniform(lsb * 4, 0.3):.6f}")
@@ -347,6 +352,8 @@ def classes_of(p, facts, resets=0):
             c.add("graph order redblack" if p["ARCH"] else "graph order serial")
             if p["ARCH"] and p["COLOURS"] > 1:
                 c.add("graph colours>1")
+            if p["ARCH"] and p["PIPE_STEPS"] > 1:
+                c.add("pipe steps>1")
         c.add("graph springs" if p["EN_SPRINGS"] else "graph rods only" if rods else "no constraints")
     else:
         c.add("K=1" if p["K"] == 1 else "")
@@ -354,6 +361,8 @@ def classes_of(p, facts, resets=0):
         if rods:
             c.add(["chain centred", "chain pairwise"][p["RULE"]])
             c.add("chain pipelined" if p["ARCH"] else "chain serial")
+            if p["ARCH"] and p["PIPE_STEPS"] > 1:
+                c.add("pipe steps>1")
             if p["ARCH"] and p["K"] == 1:
                 c.add("chain pipelined K=1")
             if facts.get("slot_bound"):

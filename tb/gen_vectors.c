@@ -373,6 +373,7 @@ static void gen_div(int exhaustive)
  * magnitude, and the generator stops if a reachable class is missing from the vectors.
  */
 static int dim = 2;
+static int pipe_steps = 1; /* toward_pipe, spring_pipe: STEPS (their latency only) */
 static scene dp_sc;
 static sim_fx dp_s;
 static double dp_pos[2][3], dp_prev[2][3];
@@ -772,8 +773,8 @@ static void gen_spring(void)
 
 int main(int argc, char **argv)
 {
-    if (argc != 7 && argc != 8 && argc != 9)
-        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS [DIM]] OUT.hex");
+    if (argc < 7 || argc > 10)
+        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS [DIM [STEPS]]] OUT.hex");
     const char *unit = argv[1];
     const int datapath = !strcmp(unit, "toward") || !strcmp(unit, "toward_pipe") || !strcmp(unit, "spring") || !strcmp(unit, "spring_pipe");
     if (argc >= 8 && !datapath) die("SQRT_BITS and DIV_BITS apart are for toward and spring");
@@ -786,8 +787,10 @@ int main(int argc, char **argv)
     fmt.sqrt_bits = fmt.div_bits = atoi(argv[5]);
     if (argc >= 8) fmt.div_bits = atoi(argv[6]);
 #ifdef GEN_DATAPATHS
-    if (argc == 9) dim = atoi(argv[7]);
+    if (argc >= 9) dim = atoi(argv[7]);
     if (dim != 2 && dim != 3) die("DIM must be 2 or 3");
+    if (argc == 10) pipe_steps = atoi(argv[8]);
+    if (pipe_steps < 1 || pipe_steps > 4) die("STEPS must be 1..4");
 #endif
     const char *bad = fx_format_check(&fmt);
     if (bad) die(bad);
@@ -813,6 +816,7 @@ int main(int argc, char **argv)
         hp.dim = dim;
         hp.sqrt_bits = fmt.sqrt_bits;
         hp.div_bits = fmt.div_bits;
+        hp.pipe_steps = pipe_steps; /* the pipes' root and divide iterations a stage */
         char path[1024];
         snprintf(path, sizeof path, "%s.latency", argv[argc - 1]);
         FILE *lf = fopen(path, "w");

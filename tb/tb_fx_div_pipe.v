@@ -6,7 +6,7 @@
  *
  * Reads the vectors of fx_div (tb/gen_vectors.c, unit div; record: flags {0,0,sat,dbz},
  * num, den, y) and streams them back to back, new operands every clock; the result of
- * the operands sampled at edge e must be there after edge e + DIV_BITS + 2, whatever
+ * the operands sampled at edge e must be there after edge e + ceil((DIV_BITS + 1) / STEPS) + 1, whatever
  * came before and after them. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
@@ -16,11 +16,12 @@ module tb_fx_div_pipe;
     parameter integer W        = 32;      // width under test
     parameter integer F        = 16;      // fraction bits under test
     parameter integer DIV_BITS = W - 1;   // quotient bits resolved under test
+    parameter integer STEPS    = 1;       // iterations a stage under test
     parameter integer MAXN     = 1 << 18; // capacity of the vector memory
 
     localparam integer FD  = 4 * ((W + 3) / 4); // a W-bit field padded to hex digits
     localparam integer RW  = 4 + 3 * FD;        // record width
-    localparam integer LAT = DIV_BITS + 3;      // cycles from operands driven to their result
+    localparam integer LAT = (DIV_BITS + STEPS) / STEPS + 2; // cycles from operands driven to their result
 
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
@@ -32,7 +33,7 @@ module tb_fx_div_pipe;
     wire [W-1:0]    result;
     wire            sat, dbz;
 
-    fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS)) dut (
+    fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) dut (
         .clk(clk), .num(num), .den(den), .result(result), .div_by_zero(dbz), .sat(sat));
 
     always #5 clk = !clk;

@@ -6,7 +6,7 @@
  *
  * Reads the vectors of fx_sqrt (tb/gen_vectors.c, unit sqrt; record: flags {0,0,0,sat},
  * radicand, y) and streams them back to back, a new radicand every clock; the result of
- * the radicand sampled at edge e must be there after edge e + SQRT_BITS + 2, whatever
+ * the radicand sampled at edge e must be there after edge e + ceil((SQRT_BITS + 1) / STEPS) + 1, whatever
  * came before and after it. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
@@ -15,12 +15,13 @@ module tb_fx_sqrt_pipe;
 
     parameter integer W         = 32;      // width under test
     parameter integer SQRT_BITS = W - 1;   // root bits resolved under test
+    parameter integer STEPS     = 1;       // iterations a stage under test
     parameter integer MAXN      = 1 << 18; // capacity of the vector memory
 
     localparam integer FD  = 4 * ((W + 3) / 4);     // a W-bit field padded to hex digits
     localparam integer RD  = 4 * ((2 * W + 3) / 4); // the 2W-bit radicand field
     localparam integer RW  = 4 + RD + FD;           // record width
-    localparam integer LAT = SQRT_BITS + 3;         // cycles from a radicand driven to its result
+    localparam integer LAT = (SQRT_BITS + STEPS) / STEPS + 2; // cycles from a radicand driven to its result
 
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
@@ -32,7 +33,7 @@ module tb_fx_sqrt_pipe;
     wire [W-1:0]    result;
     wire            sat;
 
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS)) dut (.clk(clk), .radicand(radicand), .result(result), .sat(sat));
+    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) dut (.clk(clk), .radicand(radicand), .result(result), .sat(sat));
 
     always #5 clk = !clk;
 

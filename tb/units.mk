@@ -50,8 +50,9 @@ UNITS_DEPS_mul_pipe := rtl/fx_round.v
 UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
 UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
 
-# Icarus configurations: name:unit:mode:W:F:BITS (F is ignored by add/avg/sqrt,
-# BITS by add/mul/avg; BITS is SQRT_BITS or DIV_BITS).
+# Icarus configurations: name:unit:mode:W:F:BITS[:STEPS] (F is ignored by add/avg/sqrt,
+# BITS by add/mul/avg; BITS is SQRT_BITS or DIV_BITS; STEPS, the pipelined root's and
+# divider's iterations a stage, 1 unless given).
 UNITS_ICARUS_TESTS := \
     fx_add_w8_exhaustive:add:exhaustive:8:4:7 \
     fx_add_w32_random:add:random:32:16:31 \
@@ -84,14 +85,22 @@ UNITS_ICARUS_TESTS := \
     fx_sqrt_pipe_w18_b17_random:sqrt_pipe:random:18:8:17 \
     fx_sqrt_pipe_w32_b31_random:sqrt_pipe:random:32:16:31 \
     fx_sqrt_pipe_w32_b8_random:sqrt_pipe:random:32:16:8 \
+    fx_sqrt_pipe_w8_b7_s2_exhaustive:sqrt_pipe:exhaustive:8:4:7:2 \
+    fx_sqrt_pipe_w8_b6_s3_exhaustive:sqrt_pipe:exhaustive:8:4:6:3 \
+    fx_sqrt_pipe_w32_b31_s2_random:sqrt_pipe:random:32:16:31:2 \
+    fx_sqrt_pipe_w32_b30_s4_random:sqrt_pipe:random:32:16:30:4 \
     fx_div_pipe_w8_f4_b7_exhaustive:div_pipe:exhaustive:8:4:7 \
     fx_div_pipe_w8_f6_b3_exhaustive:div_pipe:exhaustive:8:6:3 \
     fx_div_pipe_w8_f1_b7_exhaustive:div_pipe:exhaustive:8:1:7 \
     fx_div_pipe_w32_f16_b31_random:div_pipe:random:32:16:31 \
     fx_div_pipe_w32_f16_b8_random:div_pipe:random:32:16:8 \
-    fx_div_pipe_w32_f30_b31_random:div_pipe:random:32:30:31
+    fx_div_pipe_w32_f30_b31_random:div_pipe:random:32:30:31 \
+    fx_div_pipe_w8_f4_b7_s2_exhaustive:div_pipe:exhaustive:8:4:7:2 \
+    fx_div_pipe_w8_f6_b6_s3_exhaustive:div_pipe:exhaustive:8:6:6:3 \
+    fx_div_pipe_w32_f16_b31_s2_random:div_pipe:random:32:16:31:2 \
+    fx_div_pipe_w32_f16_b30_s4_random:div_pipe:random:32:16:30:4
 
-# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM (module is toward,
+# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM[:STEPS] (module is toward,
 # toward_pipe, spring_force or spring_force_pipe; its testbench is tb/tb_<module>.v; DIM 2 or 3: in 3D the
 # radicand, a sum of three squares, reaches classes a sum of two never does).
 UNITS_DP_TESTS := \
@@ -104,13 +113,16 @@ UNITS_DP_TESTS := \
     toward_pipe_w16_f8_s4_d6:toward_pipe:16:8:4:6:2 \
     toward_pipe_3d_w32_f16_s31_d31:toward_pipe:32:16:31:31:3 \
     toward_pipe_3d_w16_f8_s4_d6:toward_pipe:16:8:4:6:3 \
+    toward_pipe_w32_f16_s31_d31_x2:toward_pipe:32:16:31:31:2:2 \
+    toward_pipe_3d_w16_f8_s4_d6_x3:toward_pipe:16:8:4:6:3:3 \
     spring_force_w32_f16_s31_d31:spring_force:32:16:31:31:2 \
     spring_force_w12_f6_s8_d9:spring_force:12:6:8:9:2 \
     spring_force_3d_w32_f16_s31_d31:spring_force:32:16:31:31:3 \
     spring_force_3d_w12_f6_s8_d9:spring_force:12:6:8:9:3 \
     spring_force_pipe_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:2 \
     spring_force_pipe_w12_f6_s8_d9:spring_force_pipe:12:6:8:9:2 \
-    spring_force_pipe_3d_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:3
+    spring_force_pipe_3d_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:3 \
+    spring_force_pipe_w32_f16_s31_d31_x2:spring_force_pipe:32:16:31:31:2:2
 
 # Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
 UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
@@ -118,9 +130,9 @@ UNITS_PARAMS_mul  = -Ptb_fx_mul.W=$(1) -Ptb_fx_mul.F=$(2)
 UNITS_PARAMS_avg  = -Ptb_fx_avg.W=$(1)
 UNITS_PARAMS_sqrt = -Ptb_fx_sqrt.W=$(1) -Ptb_fx_sqrt.SQRT_BITS=$(3)
 UNITS_PARAMS_div  = -Ptb_fx_div.W=$(1) -Ptb_fx_div.F=$(2) -Ptb_fx_div.DIV_BITS=$(3)
-UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3)
+UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3) -Ptb_fx_sqrt_pipe.STEPS=$(or $(4),1)
 UNITS_PARAMS_mul_pipe  = -Ptb_fx_mul_pipe.W=$(1) -Ptb_fx_mul_pipe.F=$(2)
-UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3)
+UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3) -Ptb_fx_div_pipe.STEPS=$(or $(4),1)
 # the pipelined units take the vectors of the iterative ones: the same function
 UNITS_GEN_UNIT_sqrt_pipe := sqrt
 UNITS_GEN_UNIT_mul_pipe  := mul
@@ -151,7 +163,7 @@ $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 	$(UNITS_CC) $(UNITS_CFLAGS) -o $@ $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_ROOT)/model/fixed.c -lm
 
 # One Icarus test: vectors (cached), simulator (cached), and a run (always).
-# $(1) name, $(2) unit, $(3) mode, $(4) W, $(5) F, $(6) BITS
+# $(1) name, $(2) unit, $(3) mode, $(4) W, $(5) F, $(6) BITS, $(7) STEPS (may be empty)
 define UNITS_ICARUS_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 	@mkdir -p $$(dir $$@)
@@ -159,7 +171,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v $(addprefix $(UNITS_ROOT)/,$(UNITS_DEPS_$(2))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6)) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6),$(7)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -168,7 +180,7 @@ units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
 units-icarus: units-run-$(1)
 endef
 
-$(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))))))
+$(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
 
 # ---- the datapaths: toward, spring_force ----
 UNITS_DP_UNITS := fx_add fx_mul fx_round fx_sqrt fx_div
@@ -197,15 +209,16 @@ $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/
 	    $(addprefix $(UNITS_ROOT)/model/,fixed.c engine_fixed.c scene.c timing.c) $(UNITS_INIH) -lm
 
 # One datapath test: vectors (cached), simulator (cached), and a run (always).
-# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS, $(7) DIM
+# $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS, $(7) DIM, $(8) STEPS (may be
+# empty: 1; the pipes only)
 define UNITS_DP_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $$@ > $$@.n
+	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $(8) $$@ > $$@.n
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(8),-Ptb_$(2).STEPS=$(8)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -214,7 +227,7 @@ units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
 units-datapaths: units-run-$(1)
 endef
 
-$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
+$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))),$(word 8,$(subst :, ,$(t))))))
 
 # Every configuration's vectors (make mutate runs the benches on mutated copies of the RTL).
 units-vectors: $(foreach t,$(UNITS_ICARUS_TESTS) $(UNITS_DP_TESTS),$(UNITS_BUILD)/$(word 1,$(subst :, ,$(t)))/vectors.hex)

@@ -1,6 +1,6 @@
 // stub_spring_force_pipe - a stand-in for rtl/spring_force_pipe.v in the proof of
 // spring_stream (tb/formal/spring_stream.sby): the same ports; out_valid and out_tag are
-// in_valid and in_tag LATENCY = SQRT_BITS + DIV_BITS + 24 cycles later (what
+// in_valid and in_tag LATENCY = spring_pipe_latency() cycles later (rtl/pipe_latency.vh: what
 // spring_force_pipe's header promises, and tb/formal/datapaths.sby checks of it), and
 // out_f and out_ok are known functions of the operands: f = a - b + (ap ^ bp) lane by
 // lane (wrapping), ok = (a != b) (a zero length has no force), so the checker can tell
@@ -13,6 +13,7 @@ module spring_force_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer STEPS     = 1,
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter integer BLOCK_MIN = 64
@@ -33,7 +34,8 @@ module spring_force_pipe #(
     output reg              out_ok,
     output wire [TAG_W-1:0] out_tag
 );
-    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 24;
+`include "pipe_latency.vh"
+    localparam integer LATENCY = spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);
     // delay lines as flat shift registers (no memories: the abc engines take no x bits)
     reg [LATENCY-1:0]         v_q, ok_q;
     reg [LATENCY*TAG_W-1:0]   tag_q;

@@ -1,6 +1,6 @@
 // stub_toward_pipe - a stand-in for rtl/toward_pipe.v in the proof of chain_stream
 // (tb/formal/stream.sby): the same ports; out_valid and out_tag are in_valid and in_tag
-// LATENCY = SQRT_BITS + DIV_BITS + 15 cycles later (what toward_pipe's header promises,
+// LATENCY = toward_pipe_latency() cycles later (rtl/pipe_latency.vh: what toward_pipe's header promises,
 // and tb/formal/toward.sby checks of toward_pipe), and out_t, out_ok, out_p, out_c are
 // chosen by the solver. The sweep's order and timing are then checked for any data.
 `default_nettype none
@@ -10,6 +10,7 @@ module toward_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer STEPS     = 1,
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter [0:0]   CARRY     = 1'b0,
@@ -30,7 +31,8 @@ module toward_pipe #(
     output wire [DIM*W-1:0] out_p,
     output wire [DIM*W-1:0] out_c
 );
-    localparam integer LATENCY = SQRT_BITS + DIV_BITS + 15;
+`include "pipe_latency.vh"
+    localparam integer LATENCY = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);
     reg [LATENCY-1:0] v_q;
     reg [TAG_W-1:0]   tag_q [0:LATENCY-1];
     integer i;
