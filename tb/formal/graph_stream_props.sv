@@ -24,7 +24,8 @@ module graph_stream_props #(
     parameter integer F    = 4,
     parameter integer K    = 4,
     parameter integer E    = 3,
-    parameter integer ITER = 1
+    parameter integer ITER = 1,
+    parameter integer STEPS = 1      // the pipes' PIPE_STEPS: the stub's latency follows it
 ) (
     input wire           clk,
     input wire           reset,
@@ -40,7 +41,8 @@ module graph_stream_props #(
     localparam integer IW = K > 1 ? $clog2(K) : 1;
     localparam integer AW = 1 + IW;                       // UW = 1 (M = 1)
     localparam integer CW = $clog2((E > K ? E : K) + 1);
-    localparam integer LT = 1 + 1 + 15;                   // the stub's latency (SQRT_BITS = DIV_BITS = 1)
+`include "pipe_latency.vh"
+    localparam integer LT = toward_pipe_latency(1, 1, STEPS); // the stub's latency (SQRT_BITS = DIV_BITS = 1)
 
     wire          done, fec, wr_en;
     wire [AW-1:0] rd_addr, wr_addr;
@@ -50,7 +52,7 @@ module graph_stream_props #(
     wire [CW-1:0] counter;
 
     graph_stream #(.W(W), .F(F), .M(1), .K(K), .SQRT_BITS(1), .DIV_BITS(1), .ITER(ITER), .DIM(2), .RULE(1'b1),
-                   .ARCH(1'b1), .GRAPH(1'b1), .E_RODS(E), .COLOURS(1)) dut (
+                   .ARCH(1'b1), .GRAPH(1'b1), .E_RODS(E), .COLOURS(1), .PIPE_STEPS(STEPS)) dut (
         .clk(clk), .reset(reset), .start(start), .done(done),
         .e_we(e_we), .e_a({1'b0, e_a[IW-1:0]}), .e_b({1'b0, e_b[IW-1:0]}), .e_rest(e_rest), .e_last(e_last),
         .rd_addr(rd_addr), .rd_pos(rd_pos), .rd_pinned(rd_pinned), .rd_prev({(2*W){1'b0}}),

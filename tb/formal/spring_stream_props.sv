@@ -8,7 +8,7 @@
 // address, as strand_ram does. Checked, with start and reset at any cycle:
 //   - a start is taken only when the pass is idle (or in its done cycle); done is high
 //     exactly S = K + LS + 4 cycles after the cycle that follows it, one cycle wide, and
-//     never without a start (LS = SQRT_BITS + DIV_BITS + 24, the pipe's latency);
+//     never without a start (LS = spring_pipe_latency(), the pipe's latency: rtl/pipe_latency.vh);
 //   - every node of the chain is written exactly once in a pass, never outside one, at an
 //     address of its unit (< K); port A's address is < K and nidx follows it;
 //   - the written force of node n (any one, chosen by the solver) is the chain's gather, lane by lane and saturating:
@@ -25,7 +25,8 @@ module spring_stream_props #(
     parameter integer K    = 2,
     parameter integer DIM  = 2,
     parameter integer SQRT_BITS = 1,
-    parameter integer DIV_BITS  = 1
+    parameter integer DIV_BITS  = 1,
+    parameter integer STEPS     = 1   // the pipes' PIPE_STEPS: the stub's latency follows it
 ) (
     input wire         clk,
     input wire         reset,
@@ -39,7 +40,8 @@ module spring_stream_props #(
     localparam integer UW = M > 1 ? $clog2(M) : 1;
     localparam integer IW = K > 1 ? $clog2(K) : 1;
     localparam integer CW = $clog2(N + 1);
-    localparam integer LS = SQRT_BITS + DIV_BITS + 24;
+`include "pipe_latency.vh"
+    localparam integer LS = spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);
     localparam integer S  = K + LS + 4;
 
     (* anyconst *) reg [N*DW-1:0] pos_mem, prev_mem, acc_mem;
@@ -54,7 +56,7 @@ module spring_stream_props #(
     wire [CW-1:0]    counter;
 
     spring_stream #(.W(W), .F(F), .M(M), .K(K), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM),
-                    .EN_SPRINGS(1'b1), .ARCH(1'b1)) dut (
+                    .EN_SPRINGS(1'b1), .ARCH(1'b1), .PIPE_STEPS(STEPS)) dut (
         .clk(clk), .reset(reset), .start(start), .done(done), .rest_len(rest_len), .ks(ks), .kd(kd),
         .rd_idx(rd_idx), .rd_pos_all(rd_pos_all), .rd_prev_all(rd_prev_all), .rd_acc_all(rd_acc_all),
         .wr_en(wr_en), .wr_idx_all(wr_idx_all), .wr_acc_all(wr_acc_all),

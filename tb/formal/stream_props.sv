@@ -33,7 +33,8 @@ module stream_props #(
     parameter integer M    = 2,
     parameter integer K    = 2,
     parameter integer ITER = 1,
-    parameter [0:0]   RULE = 1'b0
+    parameter [0:0]   RULE = 1'b0,
+    parameter integer STEPS = 1      // the pipes' PIPE_STEPS: the stub's latency follows it
 ) (
     input wire               clk,
     input wire               reset,
@@ -51,7 +52,8 @@ module stream_props #(
     localparam integer NS = K / 2 + 1;                          // slots a sweep
     localparam integer PJ = (K + 1) / 2;                        // pairs read a sweep
     localparam integer SLOTS = NS;
-    localparam integer LT = 1 + 1 + 15;                         // the stub's latency (SQRT_BITS = DIV_BITS = 1)
+`include "pipe_latency.vh"
+    localparam integer LT = toward_pipe_latency(1, 1, STEPS);   // the stub's latency (SQRT_BITS = DIV_BITS = 1)
     localparam integer SP = NS + 2 > LT + 4 ? NS + 2 : LT + 4;  // chain_stream's sweep period
 
     wire             done, fec, pair_re;
@@ -64,7 +66,7 @@ module stream_props #(
     wire [CW-1:0]    counter;
 
     chain_stream #(.W(W), .F(F), .M(M), .K(K), .SQRT_BITS(1), .DIV_BITS(1), .ITER(ITER), .DIM(2), .RULE(RULE),
-                   .ARCH(1'b1)) dut (
+                   .ARCH(1'b1), .PIPE_STEPS(STEPS)) dut (
         .clk(clk), .reset(reset), .start(start), .done(done), .rest_len(rest_len),
         .pair_re(pair_re), .pair_row_e_all(row_e_all), .pair_row_o_all(row_o_all),
         .pair_pos_e_all(pos_e_all), .pair_pos_o_all(pos_o_all),
