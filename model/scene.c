@@ -679,7 +679,7 @@ static bool finish(parser *p)
     /* format */
     if (!key_line(p, S_FORMAT, "sqrt_bits")) sc->fmt.sqrt_bits = sc->fmt.width - 1;
     if (!key_line(p, S_FORMAT, "div_bits")) sc->fmt.div_bits = sc->fmt.width - 1;
-    if (!key_line(p, S_FORMAT, "pipe_steps")) sc->pipe_steps = 1;
+    if (!key_line(p, S_FORMAT, "pipe_steps")) sc->pipe_steps = 2; /* the pipelined builds' default: make synth measures 1, 2 and 4 */
     if ((msg = fx_format_check(&sc->fmt))) {
         const char *key = sc->fmt.frac > sc->fmt.width - 2 ? "frac" : sc->fmt.sqrt_bits > sc->fmt.width - 1 ? "sqrt_bits" : "div_bits";
         if (!key_line(p, S_FORMAT, key)) key = "width"; /* a default no longer fits the width */

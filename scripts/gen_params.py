@@ -48,7 +48,7 @@ PARAMS = [
     ("K",              "5",      "1", "4096", "body",        "nodes per unit (a graph: every node)"),
     ("SQRT_BITS",      "W - 1",  "1", "W - 1", "accuracy",   "square-root bits resolved, one per cycle"),
     ("DIV_BITS",       "W - 1",  "1", "W - 1", "accuracy",   "quotient bits resolved, one per cycle"),
-    ("PIPE_STEPS",     "1",      "1", "4",    "constraints", "ARCH = 1: root and divide iterations a pipeline stage in the distance and spring pipes (fx_sqrt_pipe, fx_div_pipe): fewer stages, so a shorter latency and fewer registers, for a longer path a stage"),
+    ("PIPE_STEPS",     "2",      "1", "4",    "constraints", "ARCH = 1: root and divide iterations a pipeline stage in the distance and spring pipes (fx_sqrt_pipe, fx_div_pipe): fewer stages, so a shorter latency and fewer registers, for a longer path a stage"),
     ("ITER",           "1",      "1", "1024", "time",        "constraint passes per substep"),
     ("SUBSTEPS",       "1",      "1", "1024", "time",        "substeps per frame"),
     ("EN_GRAVITY",     "1",      "0", "1",    "gravity",     "add g h^2 in the Verlet step"),
