@@ -227,7 +227,7 @@ static void reset_all(cyc_model *c)
         for (int i = 0; i <= c->lp; i++) c->gs_ring[i] = -1;
     c->running = c->done = false;
     c->vidx = 0;
-    c->pass_b = c->pass_c = c->pass_d = false;
+    c->pass_a = c->pass_b = c->pass_c = c->pass_d = false;
     for (int u = 0; u < c->hp.m; u++) c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
     for (int l = 0; l < c->hp.wb; l++) {
         c->wb_valid[l] = false;
@@ -639,8 +639,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             lane_write(c, written, node / k, node % k, node);
         }
     }
-    /* A pass's stage D (node_unit): node idx_d of every unit is written. Its stage A read
-       it four edges ago; nothing else writes a node during a pass, so computing it here, from
+    /* A pass's stage D (node_unit): node idx_d of every unit is written. Its read was four
+       edges ago (ARCH = 1: five); nothing else writes a node during a pass, so computing it here, from
        the storage as it is now, is the same. */
     if (c->pass_d && c->ground_d) {
         for (int u = 0; u < m; u++) {
@@ -775,9 +775,14 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->sq_state = next;
     }
 
-    /* node_unit pass FSM: stage A (running, vidx), stage B (pass_b, idx_b), stage C (pass_c, idx_c). */
-    const bool pass_b_next = c->running, ground_b_next = c->ground_pass;
-    const int idx_b_next = c->vidx;
+    /* node_unit pass FSM: the data arrive (running, vidx); stage A (serial: the same cycle;
+       ARCH = 1: pass_a, idx_a, the cycle after), stage B (pass_b, idx_b), stage C (pass_c, idx_c). */
+    const bool stage_a = hp->arch ? c->pass_a : c->running, ground_a = hp->arch ? c->ground_a : c->ground_pass;
+    const int idx_a = hp->arch ? c->idx_a : c->vidx;
+    const bool pass_a_next = c->running, ground_a_next = c->ground_pass;
+    const int idx_a_next = c->vidx;
+    const bool pass_b_next = stage_a, ground_b_next = ground_a;
+    const int idx_b_next = idx_a;
     const bool pass_c_next = c->pass_b, ground_c_next = c->ground_b;
     const int idx_c_next = c->idx_b;
     const bool pass_d_next = c->pass_c, ground_d_next = c->ground_c;
@@ -793,6 +798,11 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->vidx = (c->vidx + 1) & ((1 << hp->iw) - 1);
         }
         if (c->pass_d && c->idx_d == k - 1) c->done = true; /* the last node is written */
+    }
+    c->pass_a = hp->arch && pass_a_next;
+    if (c->pass_a) {
+        c->idx_a = idx_a_next;
+        c->ground_a = ground_a_next;
     }
     c->pass_b = pass_b_next;
     if (pass_b_next) {

@@ -88,7 +88,9 @@ typedef struct {
     /* node units (they run in step) */
     bool running, done;
     bool ground_pass; /* the pass under way is the ground pass */
-    int vidx;         /* stage A: the node whose data arrive */
+    int vidx;         /* the node whose data arrive (stage A; ARCH = 1 stage R) */
+    bool pass_a, ground_a; /* ARCH = 1, stage A: the words registered by stage R */
+    int idx_a;
     bool pass_b, ground_b; /* stage B: a node of a pass (of the ground pass) */
     int idx_b;
     bool pass_c, ground_c; /* stage C */

@@ -118,9 +118,11 @@ long hw_spring_pass(const hw_params *hp)
 }
 
 /* The terms of a substep and of a frame. */
-/* node_unit: K nodes through a four-stage pass (the last written 4 cycles after its read), FV;
-   with constraints the sequencer starts the cycle after */
-static long verlet_phase(const hw_params *hp) { return hp->k + (hp->en_constraints ? 5 : 4); }
+/* node_unit: K nodes through a four-stage pass (the last written 4 cycles after its read; 5 with
+   ARCH = 1, whose stage R registers the words first), FV; with constraints the sequencer starts
+   the cycle after */
+static long pass_stages(const hw_params *hp) { return hp->arch ? 5 : 4; }
+static long verlet_phase(const hw_params *hp) { return hp->k + pass_stages(hp) + (hp->en_constraints ? 1 : 0); }
 static long constrain_phase(const hw_params *hp)
 {
     if (!hp->en_constraints) return 0;
@@ -129,7 +131,7 @@ static long constrain_phase(const hw_params *hp)
     return hp->iter * hw_constraint_pass(hp);
 }
 static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
-static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + 4 : 0; }
+static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + pass_stages(hp) : 0; }
 static long grab_phase(const hw_params *hp) { return hp->grab && hp->en_mouse ? node_count(hp) + 1 : 0; }
 
 long hw_cycles_per_frame(const hw_params *hp)
@@ -155,7 +157,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "%s"
                     "constraint pass = %s = %ld%s\n"
                     "spring pass = %s = %ld\n"
-                    "substep = Verlet (K + 5 with constraints, else K + 4) + %s [+ spring pass] [+ ground K + 4] = %ld\n"
+                    "substep = Verlet (K + %s with constraints, else K + %s) + %s [+ spring pass] [+ ground K + %s] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
@@ -165,7 +167,8 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
                     chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)" : "1 + links (LS + 5)",
-                    hw_spring_pass(hp), chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes",
+                    hw_spring_pass(hp), hp->arch ? "6" : "5", hp->arch ? "5" : "4",
+                    chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes", hp->arch ? "5" : "4",
                     verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

@@ -32,13 +32,14 @@
  * else the external data (init walk, NODE loads, the sequencer), a pinned node's
  * previous position = its position (it starts at rest).
  *
- * Timing: a pass is a four-stage pipeline, each stage registered. Stage A, the cycle
- * port A's data arrive: the velocity v = q - qp (and the ground test). Stage B: the
+ * Timing: a pass is a four-stage pipeline, each stage registered (ARCH = 1: five, a
+ * stage R first that registers port A's words). Stage A, the cycle port A's data arrive
+ * (ARCH = 1: the cycle after): the velocity v = q - qp (and the ground test). Stage B: the
  * rest of the Verlet step (damping, x + v, gravity, the spring force), or the ground
  * pass's bounce and friction. Stage C: the mouse's in-touch test on this axis and the
  * impulse's sum. Stage W (the write): the impulse chosen (every axis in touch) and the write. So
  * no path holds more than two of the step's adders; a node is written four cycles
- * after its address. Storage reads are synchronous (address now, data next cycle),
+ * after its address (ARCH = 1: five). Storage reads are synchronous (address now, data next cycle),
  * read before write.
  */
 module node_lane #(
@@ -70,7 +71,8 @@ module node_lane #(
     input  wire [W-1:0]  wdata2,
 
     // the pass pipeline (node_unit's stage valids) and how the write is formed
-    input  wire          stage_a,    // a pass's node is in stage A (its data arrive now)
+    input  wire          stage_r,    // ARCH = 1: a pass's node's data arrive now (stage R registers them)
+    input  wire          stage_a,    // a pass's node is in stage A (serial: its data arrive now)
     input  wire          stage_b,    //   in stage B
     input  wire          stage_c,    //   in stage C
     input  wire          pass_w,     //   in stage W: write its result
@@ -121,9 +123,9 @@ module node_lane #(
     wire [W-1:0] np;                 // stage W: the previous position after the mouse impulse
     always @(posedge clk) begin
         if (stage_a) begin
-            q_b   <= q;
-            qp_b  <= qp;
-            qa_b  <= qa;
+            q_b   <= q_a;
+            qp_b  <= qp_a;
+            qa_b  <= qa_a;
             v_b   <= v;
             hit_b <= hit_a;
         end
@@ -168,9 +170,32 @@ module node_lane #(
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qp_e), .rdata_o(qp_o),
         .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
 
+    // ---- stage R (ARCH = 1): port A's words registered the cycle they arrive, so stage A's
+    // subtract starts from a flip-flop, not from the block RAM's output ----
+    wire [W-1:0] q_a, qp_a, qa_a;    // stage A's words
+    generate
+        if (ARCH) begin : g_stage_r
+            reg [W-1:0] q_r, qp_r, qa_r;
+            always @(posedge clk)
+                if (stage_r) begin
+                    q_r  <= q;
+                    qp_r <= qp;
+                    qa_r <= qa;
+                end
+            assign q_a  = q_r;
+            assign qp_a = qp_r;
+            assign qa_a = qa_r;
+        end else begin : g_no_stage_r
+            assign q_a  = q;
+            assign qp_a = qp;
+            assign qa_a = qa;
+            wire unused_stage_r = &{1'b0, stage_r};
+        end
+    endgenerate
+
     // ---- stage A: the velocity ----
     // saturation flags are not needed: the saturated value is the result
-    fx_add #(.W(W), .SUB(1)) u_v (.sub(1'b1), .a(q), .b(qp), .y(v), .sat());
+    fx_add #(.W(W), .SUB(1)) u_v (.sub(1'b1), .a(q_a), .b(qp_a), .y(v), .sat());
 
     // ---- stage B: the rest of the Verlet step ----
     wire [W-1:0] v_d, n1, n_g;
@@ -243,7 +268,7 @@ module node_lane #(
     // ---- the ground pass: collision with friction (the test in stage A, the rest in B) ----
     generate
         if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
-            assign hit_a = GROUND_ABOVE ? $signed(q) < $signed(ground) : $signed(ground) < $signed(q);
+            assign hit_a = GROUND_ABOVE ? $signed(q_a) < $signed(ground) : $signed(ground) < $signed(q_a);
             fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v_b), .y(gp), .sat());
             assign g = ground;
             wire unused_friction = &{1'b0, friction, qp_b};

@@ -35,7 +35,9 @@
  * the velocity), stage B (the rest of the Verlet step) is cycle i + 2, stage C (the
  * mouse's tests) cycle i + 3, and it is written at edge i + 4 (stage W: the impulse
  * chosen, the write); verlet_done rises at edge K + 3 and stays high until the next
- * start. The ground pass is timed the same. With DEBUG, every write to this unit (pass, init, load or
+ * start. With ARCH = 1 a stage R registers the words the cycle they arrive, so stage A
+ * is cycle i + 2 and every later stage and verlet_done one cycle later (write at edge
+ * i + 5, done at K + 4). The ground pass is timed the same. With DEBUG, every write to this unit (pass, init, load or
  * sequencer) shows on the write-back lane in the next cycle.
  */
 module node_unit #(
@@ -121,6 +123,8 @@ module node_unit #(
     reg          done_q, done_d;        // FV
     reg [IW-1:0] vidx_q, vidx_d;        // node whose data port A returns this cycle
     reg          ground_q, ground_d;    // the pass under way is the ground pass
+    wire         stage_a, ground_a, pin_a, grab_a;   // stage A: a node of the pass (below)
+    wire [IW-1:0] idx_a;
     reg          stage_b, ground_b, pin_b, grab_b;   // stage B: a node of the pass, and how to write it
     reg [IW-1:0] idx_b;
     reg          stage_c, ground_c, pin_c, grab_c;   // stage C
@@ -164,15 +168,15 @@ module node_unit #(
             done_q    <= done_d;
             vidx_q    <= vidx_d;
             ground_q  <= ground_d;
-            stage_b   <= running_q;
+            stage_b   <= stage_a;
             stage_c   <= stage_b;
             pass_w    <= stage_c;
         end
-        if (running_q) begin  // what the later stages need of the node
-            idx_b    <= vidx_q;
-            ground_b <= ground_q;
-            pin_b    <= q_pin;
-            grab_b   <= q_grab;
+        if (stage_a) begin  // what the later stages need of the node
+            idx_b    <= idx_a;
+            ground_b <= ground_a;
+            pin_b    <= pin_a;
+            grab_b   <= grab_a;
         end
         if (stage_b) begin
             idx_c    <= idx_b;
@@ -189,6 +193,37 @@ module node_unit #(
     end
 
     assign verlet_done = done_q;
+
+    // ---- stage A: serial, the cycle port A's data arrive; ARCH = 1, the cycle after (stage R
+    // registers the words first: the path from a block RAM's unregistered output through the
+    // velocity's subtract set the pipelined builds' clock) ----
+    generate
+        if (ARCH) begin : g_stage_r
+            reg          stage_r_q, ground_r_q, pin_r_q, grab_r_q;
+            reg [IW-1:0] idx_r_q;
+            always @(posedge clk) begin
+                if (reset) stage_r_q <= 1'b0;
+                else stage_r_q <= running_q;
+                if (running_q) begin
+                    idx_r_q    <= vidx_q;
+                    ground_r_q <= ground_q;
+                    pin_r_q    <= q_pin;
+                    grab_r_q   <= q_grab;
+                end
+            end
+            assign stage_a  = stage_r_q;
+            assign idx_a    = idx_r_q;
+            assign ground_a = ground_r_q;
+            assign pin_a    = pin_r_q;
+            assign grab_a   = grab_r_q;
+        end else begin : g_no_stage_r
+            assign stage_a  = running_q;
+            assign idx_a    = vidx_q;
+            assign ground_a = ground_q;
+            assign pin_a    = q_pin;
+            assign grab_a   = q_grab;
+        end
+    endgenerate
 
     // ---- port A: during a pass the address runs ahead of vidx by one (node vidx+1 is
     // read while node vidx is written) ----
@@ -255,7 +290,7 @@ module node_unit #(
                 .acc_we(acc_we && {1'b0, w_idx} < K_COUNT), .acc_w(acc_w[k*W +: W]),
                 .pair_re(pair_re), .pair_row_e(pair_row_e), .pair_row_o(pair_row_o),
                 .we2(we2), .widx2(w2_idx), .wdata2(w2_pos[k*W +: W]),
-                .stage_a(running_q), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
+                .stage_r(running_q), .stage_a(stage_a), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
                 .grab_w(grab_w),
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
