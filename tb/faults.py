@@ -93,9 +93,18 @@ FAULTS["graph_boundary"] = [
     ("graph_stream.v", r"DRAIN_I = LT \+ 2;", "DRAIN_I = LT + 1;  // planted fault: a drain one cycle short"),
 ]
 
+# node_unit's stage R (ARCH = 1) bypassed in the lanes: stage A takes port A's words as they
+# come, which one cycle after their arrival are the next node's, so the pass steps every node
+# from its successor's position and velocity
+FAULTS["stage_r"] = [
+    ("node_lane.v", r"^            assign q_a  = q_r;\n            assign qp_a = qp_r;\n            assign qa_a = qa_r;\n",
+     "            assign q_a  = q;   // planted fault: stage R bypassed\n            assign qp_a = qp;\n            assign qa_a = qa;\n"
+     "            wire unused_fault = &{1'b0, q_r, qp_r, qa_r};\n"),
+]
+
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
 ORDER = {"boundary": "redblack", "slots_cut": "redblack", "bypass": "redblack", "hazard": "redblack",
-         "graph_hazard": "redblack", "graph_boundary": "redblack"}
+         "graph_hazard": "redblack", "graph_boundary": "redblack", "stage_r": "redblack"}
 # The scene a fault runs on, where it is not the default chain (tb/scenes/chain_q10_8.scene).
 SCENE = {"graph_hazard": "tb/scenes/graph3d_q12.scene", "graph_boundary": "tb/scenes/graph3d_q12.scene",
          "slots_cut": "tb/scenes/chain_slot_bound.scene"}

@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -290,6 +290,14 @@ bool Run::cycle(const cyc_inputs &in) {
         cyc_get_outputs(&model_, &m);
         if (m.wb_valid[0] && last_edge_verlet_ && ++fault_writes_ == 5) r_.predicted_fault = cyc_;
     }
+    // stage_r: the first node a Verlet pass writes (in any unit) was stepped from its
+    // successor's words, so a write-back lane shows it wrong the cycle after that write
+    if (o_.expect == "stage_r" && r_.predicted_fault < 0 && last_edge_verlet_) {
+        cyc_outputs m;
+        cyc_get_outputs(&model_, &m);
+        for (int l = 0; l < hp_.wb; l++)
+            if (m.wb_valid[l]) r_.predicted_fault = cyc_;
+    }
     if (o_.expect == "delay" && r_.predicted_fault < 0) {
         cyc_outputs m;
         cyc_get_outputs(&model_, &m);
@@ -493,7 +501,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -537,8 +545,9 @@ int main(int argc, char **argv) {
     }
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
-        o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary")
-        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard or graph_boundary");
+        o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary" &&
+        o.expect != "stage_r")
+        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary or stage_r");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
     if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 
