@@ -263,7 +263,7 @@ def main():
 
     total = time.time() - t_start
     print("formal: %d tasks, %d planted faults, %d failed, %.0f s" % (len(rows), len(frows), failed, total))
-    if a.doc and a.only:
+    if a.doc and (a.only or a.no_tasks):  # a partial run: its rows replace theirs in the last full table
         update_doc(a.doc, rows, frows)
     elif a.doc:
         write_doc(a.doc, rows, frows, total)
@@ -275,7 +275,7 @@ def cell(text):
 
 
 def update_doc(doc, rows, frows):
-    """--only with --doc: the rows of the tasks that ran are replaced in the table the last
+    """--only or --no-tasks with --doc: the rows of the tasks that ran are replaced in the table the last
     full run wrote (the first row of each file with its checker's 'proves' text as it is now),
     so are the planted faults that ran (--faults PATTERN; a fault the table lacks is added),
     and a line says they ran again alone."""
