@@ -270,6 +270,15 @@ def main():
           "#define STRAND_PARAMS_DERIVE(p) do { \\"]
     h += [f"    (p)->{n.lower()} = (int)({translate(e, names, 'c').replace('p->', '(p)->')}); \\" for n, e, m in DERIVED]
     h += ["} while (0)", "",
+          "/* dst (a copy of src) as the modules below strand_core see it (strand_params_pass.vh): a",
+          "   parameter its switch leaves without effect (ONLY in the table) takes its default, judged",
+          "   on src's values. STRAND_PARAMS_DERIVE(dst) after it. */",
+          "#define STRAND_PARAMS_PASSED(dst, src) do { \\"]
+    for name, default, lo, hi, effect, meaning in PARAMS:
+        if name in ONLY:
+            c = lambda e: translate(e, names, "c").replace("p->", "(src)->")
+            h.append(f"    if (!({c(ONLY[name])})) (dst)->{name.lower()} = (int)({c(default)}); \\")
+    h += ["} while (0)", "",
           "/* Sets every parameter of p to its default. */",
           "#define STRAND_PARAMS_DEFAULTS(p) do { \\"]
     h += [f"    (p)->{n.lower()} = (int)({translate(r[1], names, 'c').replace('p->', '(p)->')}); \\" for n, r in zip(base, PARAMS)]

@@ -578,8 +578,14 @@ int main(int argc, char **argv) {
     STRAND_PARAMS(STRAND_SAME)
 #undef STRAND_SAME
     // --as-built: the model takes the build's parameters (an effect the build leaves out
-    // is left out of the model too, though the scene names it and its registers are written)
-    if (o.as_built) hp = built;
+    // is left out of the model too, though the scene names it and its registers are written),
+    // as strand_core passes them to its modules: a parameter whose switch is off is its default
+    // there (ARCH = 1 with EN_CONSTRAINTS = 0 builds the serial node units)
+    if (o.as_built) {
+        hp = built;
+        STRAND_PARAMS_PASSED(&hp, &built);
+        STRAND_PARAMS_DERIVE(&hp);
+    }
     else if (!same) {
         std::fprintf(stderr, "%s:1: this harness was built for another scene's parameters; build it for this one (make sim SCENE=%s)\n",
                      sc.path, sc.path);
