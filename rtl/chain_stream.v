@@ -138,23 +138,43 @@ module chain_stream #(
     wire          last      = colour && iter_q == ITER_LAST;  // the pass's last sweep
     wire          sweep_end = running && t == (last ? SL_LAST : SP_LAST);
     wire          slot      = running && t >= 2 && t <= T_NS1;  // slot j = t - 2 is issued
-    wire          reading   = running && t >= 1 && t <= T_PJ;   // pair t - 1 is read
+    // pair t - 1 is read (running, 1 <= t <= T_PJ), the pair row jr = t - 1: both registered,
+    // formed a cycle ahead from t (below), so that the memories' addresses and the pinned
+    // flags' multiplexers start from flip-flops, not from the sweep counter's subtract
+    reg           reading;
+    reg [IW-1:0]  jr;
     wire          take_after = K_EVEN && running && t == T_PJ1; // the neighbours' last pair arrives
     localparam [TW-1:0] T_TWO = 2;
     /* verilator lint_off UNUSEDSIGNAL */
     // a slot or pair number needs the low bits only
     wire [TW-1:0] t_minus_2 = t - T_TWO;
-    wire [TW-1:0] t_minus_1 = t - 1'b1;
     // the slot number j = t - 2, as XW bits: zero-extended first, since the sweep counter can be
     // narrower than a slot number (K = 256: TW = 8 bits, XW = 9)
     wire [TW+XW-1:0] t_minus_2_wide = {{XW{1'b0}}, t_minus_2};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [XW-1:0] j  = t_minus_2_wide[XW-1:0];
-    wire [IW-1:0] jr = reading ? t_minus_1[IW-1:0] : {IW{1'b0}};
     // the slots issued: the count restarts at the sweep's first slot, so that it reaches NS
     // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 2), and FEC
     // stays high until the next sweep's first slot
     wire [CW-1:0] counter_next = !slot ? counter : t == T_TWO ? {{(CW-1){1'b0}}, 1'b1} : counter + 1'b1;
+
+    // next cycle's t is t + 1 while a sweep runs on (else 0: a sweep's end, a start, idle), so
+    // next cycle reads pair t when t + 1 <= T_PJ
+    wire reading_next = running && !sweep_end && t < T_PJ;
+    /* verilator lint_off UNUSEDSIGNAL */
+    // the row is t's low bits: zero-extended first, since the sweep counter can be narrower
+    // than a row (a slot-bound unit at a short pipe)
+    wire [TW+IW-1:0] t_wide = {{IW{1'b0}}, t};
+    /* verilator lint_on UNUSEDSIGNAL */
+    always @(posedge clk) begin
+        if (reset) begin
+            reading <= 1'b0;
+            jr      <= {IW{1'b0}};
+        end else begin
+            reading <= reading_next;
+            jr      <= reading_next ? t_wide[IW-1:0] : {IW{1'b0}};
+        end
+    end
 
     always @(posedge clk) begin
         if (reset) begin
