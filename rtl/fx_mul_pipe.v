@@ -20,11 +20,18 @@
  * block's own speed: the part sums and one block in the first stage, the adders in the
  * second. Every step is exact, so prod is a * b bit for bit.
  *
+ * Operands of at most ONE_BLOCK_W bits (18: the ECP5's MULT18X18D, a signed 18 x 18
+ * block) need no split: one block forms a * b in the first stage and the second only
+ * registers it again, so the latency stays 2 and a Q10.8 datapath takes one block a
+ * product, not three. ONE_BLOCK_W = 0 forces the split at any width (the unit bench
+ * checks the split exhaustively at W = 8 that way).
+ *
  * Latency: operands on the inputs in cycle 0 give prod in cycle 2. Throughput one
  * product per clock. No reset.
  */
 module fx_mul_pipe #(
-    parameter integer W = 32  // operand width in bits, 8..32
+    parameter integer W           = 32,  // operand width in bits, 8..32
+    parameter integer ONE_BLOCK_W = 18   // widths up to this take one multiplier, not a split
 ) (
     input  wire           clk,
     input  wire [W-1:0]   a,     // signed
@@ -34,34 +41,43 @@ module fx_mul_pipe #(
 
     `STRAND_CHECK(fx_mul_pipe_W, W >= 8 && W <= 32, ("fx_mul_pipe: W must be 8..32 (W=%0d) in %m", W))
 
-    localparam integer H  = (W + 1) / 2;  // low part bits
-    localparam integer HW = W - H;        // high part bits (signed)
+    generate if (W <= ONE_BLOCK_W) begin : g_one_block
+        // stage 1: the product in one block; stage 2: registered again (the split's latency)
+        reg signed [2*W-1:0] prod_s1;
+        always @(posedge clk) begin
+            prod_s1 <= $signed(a) * $signed(b);
+            prod    <= prod_s1;
+        end
+    end else begin : g_split
+        localparam integer H  = (W + 1) / 2;  // low part bits
+        localparam integer HW = W - H;        // high part bits (signed)
 
-    wire signed [HW-1:0] a_hi = a[W-1:H];
-    wire signed [HW-1:0] b_hi = b[W-1:H];
-    wire        [H-1:0]  a_lo = a[H-1:0];  // unsigned
-    wire        [H-1:0]  b_lo = b[H-1:0];
-    // aH + aL lies in [-2^(HW-1), 2^(HW-1) - 1 + 2^H - 1]: H + 2 bits signed (HW <= H)
-    wire signed [H+1:0]  a_sum = {{(H+2-HW){a_hi[HW-1]}}, a_hi} + {2'b00, a_lo};
-    wire signed [H+1:0]  b_sum = {{(H+2-HW){b_hi[HW-1]}}, b_hi} + {2'b00, b_lo};
+        wire signed [HW-1:0] a_hi = a[W-1:H];
+        wire signed [HW-1:0] b_hi = b[W-1:H];
+        wire        [H-1:0]  a_lo = a[H-1:0];  // unsigned
+        wire        [H-1:0]  b_lo = b[H-1:0];
+        // aH + aL lies in [-2^(HW-1), 2^(HW-1) - 1 + 2^H - 1]: H + 2 bits signed (HW <= H)
+        wire signed [H+1:0]  a_sum = {{(H+2-HW){a_hi[HW-1]}}, a_hi} + {2'b00, a_lo};
+        wire signed [H+1:0]  b_sum = {{(H+2-HW){b_hi[HW-1]}}, b_hi} + {2'b00, b_lo};
 
-    // stage 1: the three products
-    reg signed [2*HW-1:0]  hh;
-    reg        [2*H-1:0]   ll;   // unsigned
-    reg signed [2*H+3:0]   m;
-    always @(posedge clk) begin
-        hh <= a_hi * b_hi;
-        ll <= a_lo * b_lo;
-        m  <= a_sum * b_sum;
-    end
+        // stage 1: the three products
+        reg signed [2*HW-1:0]  hh;
+        reg        [2*H-1:0]   ll;   // unsigned
+        reg signed [2*H+3:0]   m;
+        always @(posedge clk) begin
+            hh <= a_hi * b_hi;
+            ll <= a_lo * b_lo;
+            m  <= a_sum * b_sum;
+        end
 
-    // stage 2: the middle term m - hh - ll (|aH bL + aL bH| < 2^(HW+H)) and the weighted
-    // sum, every term sign-extended to 2W bits
-    wire signed [2*W-1:0] hh_w  = {{(2*W-2*HW){hh[2*HW-1]}}, hh};
-    wire signed [2*W-1:0] ll_w  = {{(2*W-2*H){1'b0}}, ll};
-    wire signed [2*W-1:0] m_w   = {{(2*W-2*H-4){m[2*H+3]}}, m};
-    wire signed [2*W-1:0] mid_w = m_w - hh_w - ll_w;
-    always @(posedge clk) prod <= (hh_w <<< (2 * H)) + (mid_w <<< H) + ll_w;
+        // stage 2: the middle term m - hh - ll (|aH bL + aL bH| < 2^(HW+H)) and the weighted
+        // sum, every term sign-extended to 2W bits
+        wire signed [2*W-1:0] hh_w  = {{(2*W-2*HW){hh[2*HW-1]}}, hh};
+        wire signed [2*W-1:0] ll_w  = {{(2*W-2*H){1'b0}}, ll};
+        wire signed [2*W-1:0] m_w   = {{(2*W-2*H-4){m[2*H+3]}}, m};
+        wire signed [2*W-1:0] mid_w = m_w - hh_w - ll_w;
+        always @(posedge clk) prod <= (hh_w <<< (2 * H)) + (mid_w <<< H) + ll_w;
+    end endgenerate
 
 endmodule
 

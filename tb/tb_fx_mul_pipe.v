@@ -9,7 +9,7 @@
  * goes through fx_round: the pair driven in cycle c must give y and sat in cycle c + 2,
  * whatever came before and after it. So the split into partial products is checked
  * against model/fixed.c's fx_mul on every operand pair at W = 8 and on edge and random
- * pairs at wider (and odd) widths. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * pairs at wider (and odd) widths, and so is the one-block product (W <= ONE_BLOCK_W). Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
  */
@@ -17,6 +17,7 @@ module tb_fx_mul_pipe;
 
     parameter integer W    = 32;      // width under test
     parameter integer F    = 16;      // fraction bits under test
+    parameter integer ONE_BLOCK_W = 18; // fx_mul_pipe's: 0 checks the split at any width
     parameter integer MAXN = 1 << 18; // capacity of the vector memory
 
     localparam integer FD  = 4 * ((W + 3) / 4);  // a W-bit field padded to hex digits
@@ -34,7 +35,7 @@ module tb_fx_mul_pipe;
     wire [W-1:0]    y;
     wire            sat;
 
-    fx_mul_pipe #(.W(W)) dut (.clk(clk), .a(a), .b(b), .prod(prod));
+    fx_mul_pipe #(.W(W), .ONE_BLOCK_W(ONE_BLOCK_W)) dut (.clk(clk), .a(a), .b(b), .prod(prod));
     fx_round #(.W(W), .F(F)) u_round (.prod(prod), .y(y), .sat(sat));
 
     initial forever #5 clk = !clk;

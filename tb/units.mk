@@ -78,7 +78,10 @@ UNITS_ICARUS_TESTS := \
     fx_div_w32_f16_b8_random:div:random:32:16:8 \
     fx_div_w32_f30_b31_random:div:random:32:30:31 \
     fx_mul_pipe_w8_f4_exhaustive:mul_pipe:exhaustive:8:4:7 \
+    fx_mul_pipe_w8_f4_split_exhaustive:mul_pipe:exhaustive:8:4:7:0 \
     fx_mul_pipe_w17_f8_random:mul_pipe:random:17:8:16 \
+    fx_mul_pipe_w18_f8_random:mul_pipe:random:18:8:17 \
+    fx_mul_pipe_w19_f8_random:mul_pipe:random:19:8:18 \
     fx_mul_pipe_w32_f16_random:mul_pipe:random:32:16:31 \
     fx_sqrt_pipe_w8_b7_exhaustive:sqrt_pipe:exhaustive:8:4:7 \
     fx_sqrt_pipe_w8_b3_exhaustive:sqrt_pipe:exhaustive:8:4:3 \
@@ -131,7 +134,7 @@ UNITS_PARAMS_avg  = -Ptb_fx_avg.W=$(1)
 UNITS_PARAMS_sqrt = -Ptb_fx_sqrt.W=$(1) -Ptb_fx_sqrt.SQRT_BITS=$(3)
 UNITS_PARAMS_div  = -Ptb_fx_div.W=$(1) -Ptb_fx_div.F=$(2) -Ptb_fx_div.DIV_BITS=$(3)
 UNITS_PARAMS_sqrt_pipe = -Ptb_fx_sqrt_pipe.W=$(1) -Ptb_fx_sqrt_pipe.SQRT_BITS=$(3) -Ptb_fx_sqrt_pipe.STEPS=$(or $(4),1)
-UNITS_PARAMS_mul_pipe  = -Ptb_fx_mul_pipe.W=$(1) -Ptb_fx_mul_pipe.F=$(2)
+UNITS_PARAMS_mul_pipe  = -Ptb_fx_mul_pipe.W=$(1) -Ptb_fx_mul_pipe.F=$(2) -Ptb_fx_mul_pipe.ONE_BLOCK_W=$(or $(4),18)
 UNITS_PARAMS_div_pipe  = -Ptb_fx_div_pipe.W=$(1) -Ptb_fx_div_pipe.F=$(2) -Ptb_fx_div_pipe.DIV_BITS=$(3) -Ptb_fx_div_pipe.STEPS=$(or $(4),1)
 # the pipelined units take the vectors of the iterative ones: the same function
 UNITS_GEN_UNIT_sqrt_pipe := sqrt

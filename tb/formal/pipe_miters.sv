@@ -102,7 +102,8 @@ endmodule
 
 // fx_mul_pipe against fx_mul's exact product: a and b in cycle 0, prod in cycle 2.
 module mul_miter #(
-    parameter integer W = 8
+    parameter integer W           = 8,
+    parameter integer ONE_BLOCK_W = 18  // 0: the three-product split at this width
 ) (
     input wire         clk,
     input wire [W-1:0] a,
@@ -113,7 +114,7 @@ module mul_miter #(
     wire [W-1:0]   y_unused;
     wire           sat_unused;
     fx_mul #(.W(W), .F(1)) u_serial (.a(a), .b(b), .y(y_unused), .sat(sat_unused), .prod(prod_s));
-    fx_mul_pipe #(.W(W)) u_pipe (.clk(clk), .a(a), .b(b), .prod(prod_p));
+    fx_mul_pipe #(.W(W), .ONE_BLOCK_W(ONE_BLOCK_W)) u_pipe (.clk(clk), .a(a), .b(b), .prod(prod_p));
 
     reg [1:0]     age = 2'd0;                    // cycles since the start of the trace, to 2
     reg [2*W-1:0] p1, p2;
