@@ -41,6 +41,9 @@ from strandflow.core import BUILD, ROOT, Failure, run  # noqa: E402
 
 BUILDS = ["4x5", "8x8", "16x16"]
 PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "2x256", "8x128", "4x256"]  # 1x256, 2x256: pipelined chains make synth places
+# Q10.8 chains (W = 18: a third of the multipliers a unit): the centred rule, pipelined only; the
+# 1024-node rope make synth places and the 4096-node one it packs (the largest that fits)
+NARROW_BUILDS = ["q10_4x256", "q10_16x256"]
 RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene with rule = pairwise
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
@@ -143,10 +146,10 @@ def physics():
     """Rows of the throughput table, the rope figures and notes (as markdown lines)."""
     rows = []
     flags = ""
-    for b, rule in [(b, rule) for rule in RULES for b in PHYS_BUILDS]:
+    for b, rule in [(b, rule) for rule in RULES for b in PHYS_BUILDS] + [(b, "centred") for b in NARROW_BUILDS]:
         scene = f"tb/bench/bench_{b}.scene" if rule == "centred" else rule_variant(f"tb/bench/bench_{b}.scene", rule)
-        m, k = (int(x) for x in b.split("x"))
-        for arch, order, suffix in ARCHS:
+        m, k = units_nodes(b)
+        for arch, order, suffix in ARCHS if b not in NARROW_BUILDS else ARCHS[1:]:
             f = rtl_figures(scene, PHYS_FRAMES, order)
             cyc, upf, per_clock, per_clock_c = (f["cycles_per_frame"], f["updates_per_frame"], f["updates_per_clock"],
                                                 f["updates_per_clock_passes"])
@@ -184,13 +187,34 @@ def physics():
         big = max(pipe, key=lambda r: r["nodes"] * 1000 + r["m"])
         GOALS["ratio"] = (big["build"], big["hw"] / big["cpu_d"], big["mhz"])
         notes.append(f"The largest pipelined build placed on the ECP5-85F is **{big['build']}** ({big['nodes']} nodes, "
-                     f"{big['m']} unit{'s' if big['m'] > 1 else ''}): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
+                     f"{big['m']} unit{'s' if big['m'] > 1 else ''}, {width_of(big['build'])}): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
                      f"**{big['hw'] / big['cpu_d']:.2f}x** one CPU core in double and {big['hw'] / big['cpu_f']:.2f}x in float "
                      "(goal: 10x).")
     else:
         notes.append("No pipelined build has an fmax yet (run `make synth`): the updates per second and the "
                      "ratio to the CPU need it.")
+    # the clock each pipelined build would need for the ratio goal: its updates per clock are measured
+    # above, so this is what the place and route has to reach (not a figure of the device)
+    need = [f"{r['build']} ({width_of(r['build'])}, {r['m']} units; {r['mhz_text']}) "
+            f"{GOAL_RATIO * r['cpu_d'] / r['per_clock'] / 1e6:.0f} MHz"
+            for r in rows if r["arch"] == "pipelined" and r["rule"] == "centred" and r["nodes"] >= 1024]
+    if need:
+        notes.append("")
+        notes.append(f"The clock at which a pipelined build would reach {GOAL_RATIO:g}x the CPU in double, from the updates "
+                     "per clock measured above and the CPU's row (what its place and route would have to reach, not a "
+                     "measured fmax): " + "; ".join(need) + ".")
     return lines + notes + rope(rows)
+
+
+def units_nodes(b):
+    """(M, K) of a bench build's name: 4x256, q10_4x256."""
+    m, k = re.search(r"(\d+)x(\d+)$", b).groups()
+    return int(m), int(k)
+
+
+def width_of(b):
+    """The bench build's number format as the page names it."""
+    return "Q10.8" if b.startswith("q10_") else "Q16.16"
 
 
 def long_bodies(rows):

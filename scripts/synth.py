@@ -92,6 +92,13 @@ BUILDS = [
     ("8x128_pair_pipe", {"M": 8, "K": 128, "ARCH": 1, "RULE": 1}, "ecp5p"),
     # a graph's pipelined pass (graph_stream, one toward_pipe): the cloth of tb/bench/graph_cloth.scene
     # (16 x 16 nodes, 480 rods in 4 colours), the graph of the speed comparison
+    # the same chains in Q10.8 (W = 18: one MULT18X18D a product, fx_mul_pipe): a unit takes a third
+    # of the multipliers and about half the logic of a Q16.16 one, so three times the units fit.
+    # One unit and the 1024-node rope (4 units) are placed; 16 units (a 4096-node rope) are packed:
+    # the largest chain of this width that fits the device's multipliers and block RAM by twos
+    ("q10_1x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 1, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("q10_4x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 4, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("q10_16x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 16, "K": 256, "ARCH": 1}, "ecp5p"),
     ("cloth_pipe", {"M": 1, "K": 256, "GRAPH": 1, "RULE": 1, "ARCH": 1, "E_RODS": 480, "COLOURS": 4}, "ecp5p"),
 ]
 BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
@@ -106,7 +113,8 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # 8x8 and the 16x16 (more multipliers than the device has) get generic cells only, and the
 # report gives the multipliers they would need.
 PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe_s1": [1], "1x256_pipe_s4": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [1], "8x128_pair_pipe": [],
-              "cloth_pipe": [1]}
+              "cloth_pipe": [1], "q10_1x256_pipe": [1], "q10_4x256_pipe": [1],
+              "q10_16x256_pipe": []}
 # Builds routed by nextpnr's router2 instead of its default router1 (a device filled to three
 # quarters). The 4x5 is back on router1: router2 stalled on it twice, at about 19,000 overused
 # wires after ten iterations, with 128 and with 96 multiplier blocks; router1 routed an earlier
@@ -124,7 +132,7 @@ PNR_BUDGET.update({"4x5_pipe": 7200, "4x256_pipe": 5400})
 # whether the 1024-node ropes fit, in a minute. The 8x128_pair is not placed in make synth
 # (`synth.py pnr BUILD` places one alone once its seed is listed above; make synth then takes
 # its figures from the record).
-PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe"]
+PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe", "q10_16x256_pipe"]
 # The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
 # where the cells of a unit of the largest build go.
 HIER_BUILD = "4x256_pipe"
@@ -237,15 +245,22 @@ def pipe_count(b):
 
 
 def pipe_mults(res):
-    """(MULT18X18D of one distance pipe, {pipelined build: MULT18X18D its pipes need}), from the
-    first pipelined chain gather() has synth_ecp5 cells of (its count over its pipes); (None, {})
-    when there is none. A graph's build has one pipe."""
-    chains = [b for b in PIPE if (res[b].get("ecp5") or {}).get("counts") is not None
-              and not BUILD_MAP[b][0].get("GRAPH")]
-    if not chains:
-        return None, {}
-    per_pipe = pick(res[chains[0]]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / pipe_count(chains[0])
-    return per_pipe, {b: per_pipe * (1 if BUILD_MAP[b][0].get("GRAPH") else pipe_count(b)) for b in PIPE}
+    """({W: MULT18X18D of one distance pipe at that width}, {pipelined build: MULT18X18D its pipes
+    need}), each width's count from the first pipelined chain of that width gather() has
+    synth_ecp5 cells of (its count over its pipes); a build whose width has none gets no entry.
+    A graph's build has one pipe."""
+    per_pipe = {}
+    for b in PIPE:
+        o = BUILD_MAP[b][0]
+        w = o.get("W", 32)
+        if w not in per_pipe and not o.get("GRAPH") and (res[b].get("ecp5") or {}).get("counts") is not None:
+            per_pipe[w] = pick(res[b]["ecp5"]["counts"], lambda t: t == "MULT18X18D") / pipe_count(b)
+    needs = {}
+    for b in PIPE:
+        o = BUILD_MAP[b][0]
+        if o.get("W", 32) in per_pipe:
+            needs[b] = per_pipe[o.get("W", 32)] * (1 if o.get("GRAPH") else pipe_count(b))
+    return per_pipe, needs
 
 
 # ---- the document ----
@@ -460,9 +475,8 @@ def report(bdir, gen, out, srcs):
     w("## The pipelined builds (ARCH = 1) on the ECP5-85F")
     w("")
     placed_pipe = [b for b in PIPE if seeds_of(b)]
-    # the multipliers of a distance pipe: a synthesised build's, over its pipes (a unit of the
+    # the multipliers of a distance pipe at each width: a synthesised build's, over its pipes (a unit of the
     # centred rule has two, of the pairwise rule one)
-    synthesised = [b for b in PIPE if counts(b, "ecp5") is not None and not BUILD_MAP[b][0].get("GRAPH")]
     per_unit, needs = pipe_mults(res)
     unplaced_pipe = [b for b in PIPE if not seeds_of(b) and b not in PIPE_PACK]
 
@@ -497,10 +511,13 @@ def report(bdir, gen, out, srcs):
       + (f"{', '.join(unplaced_pipe)}: generic cells only (a place and route of the WebAssembly nextpnr-ecp5 "
          "takes an hour or more here). " if unplaced_pipe else "")
       + f"The ECP5-85F has {ECP5_85_MULTS} MULT18X18D, which bounds the pipes that fit"
-      + (f": a toward_pipe takes {per_unit:g} (two squares and two products of 32 x 32 bits; {synthesised[0]}'s "
-         f"count over its pipes), so at most {int(ECP5_85_MULTS // per_unit)} pipes fit: {int(ECP5_85_MULTS // per_unit) // 2} units of the "
-         f"centred rule, {int(ECP5_85_MULTS // per_unit)} of the pairwise; the last column gives each build's pipes x "
-         f"{per_unit:g}." if per_unit else "."))
+      + (": " + "; ".join(
+          f"a toward_pipe at W = {w} takes {n:g} (two squares and two products of {w} x {w} bits, "
+          + ("three blocks each, fx_mul_pipe's split" if w > 18 else "one block each") + f"; the first such build's "
+          f"count over its pipes), so at most {int(ECP5_85_MULTS // n)} pipes of that width fit: "
+          f"{int(ECP5_85_MULTS // n) // 2} units of the centred rule, {int(ECP5_85_MULTS // n)} of the pairwise"
+          for w, n in sorted(per_unit.items(), reverse=True))
+         + ". The last column gives each build's pipes x its width's count." if per_unit else "."))
     w("")
     w("| build | generic cells | LUT4 | FF | CCU2C (carry) | MULT18X18D | DPR16X4 | DP16KD | placed: LUT4 / FF / DP16KD "
       "| fmax per seed, MHz | median | MULT18X18D needed (pipes x per pipe) |")
