@@ -325,7 +325,7 @@ lint-c: $(GEN_HDRS)
 	@echo "lint-c: clean (-std=c11 -pedantic -Wall -Wextra -Werror)"
 
 # strand_core is linted with its defaults and with the build of every scene the RTL runs in
-# make test and make bench (tb/bench/: the long bodies, K up to 256), in both constraint
+# make test and make bench (tb/bench/: the long bodies, K up to 1024), in both constraint
 # orders ('strand info SCENE --vflags [--order redblack]': the parameters hwgen derives),
 # each build once.
 LINT_SCENES := $(sort $(RTL_SCENES) $(foreach s,$(LOCKSTEP_SCENES),$(firstword $(subst :, ,$(s)))) $(wildcard tb/bench/*.scene))

@@ -40,14 +40,16 @@ from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run
 from strandflow.core import BUILD, ROOT, Failure, run  # noqa: E402
 
 BUILDS = ["4x5", "8x8", "16x16"]
-PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "2x256", "8x128", "4x256"]  # 1x256, 2x256: pipelined chains make synth places
+# 1x256, 2x256: pipelined chains make synth places; 2x512: units of 512 nodes, over which a pass's
+# fixed costs (the pipe's drain) spread twice as thin as over 256
+PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "2x256", "8x128", "4x256", "2x512"]
 # Q10.8 chains (W = 18: a third of the multipliers a unit): the centred rule, pipelined only; the
 # 1024-node rope make synth places and the 4096-node one it packs (the largest that fits)
 NARROW_BUILDS = ["q10_4x256", "q10_16x256"]
 RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene with rule = pairwise
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
 ARCHS = [("serial", "serial", ""), ("pipelined", "redblack", "_pipe")]  # name, order, make synth's suffix
-SPRING_BUILDS = ["4x5", "8x128", "4x256"]  # tb/bench/springs_<build>.scene: chains of springs
+SPRING_BUILDS = ["4x5", "8x128", "4x256", "2x512", "1x1024"]  # tb/bench/springs_<build>.scene: chains of springs
 GRAPH_SCENE, GRAPH_BUILD = "tb/bench/graph_cloth.scene", "cloth"  # a graph: make synth's cloth_pipe
 ROPE = "4x256"            # the 1024-node rope: the largest centred chain an ECP5-85F holds (8 distance pipes)
 ROPE_REST = "tb/bench/rope_rest.scene"  # the same rope hanging at rest
@@ -235,7 +237,7 @@ def long_bodies(rows):
         per = (r["per_clock_c"] / r["m"], f["updates_per_clock_passes"] / r["m"])
         out.append(f"| {r['build']} | {r['rule']} | {k} | {per[0]:.3f} | {per[1]:.3f} |")
         key = f"per_unit_{r['rule']}"
-        if key not in GOALS or per[1] > GOALS[key][1]:
+        if key not in GOALS or per[0] > GOALS[key][2]:  # the best at one iteration, the hard case
             GOALS[key] = (r["build"], per[1], per[0])
         print(f"bench long body {r['build']} {r['rule']}: {per[0]:.3f} / {per[1]:.3f} updates per clock a unit "
               f"at 1 / {GOAL_ITERS} iterations", flush=True)
@@ -360,7 +362,7 @@ def springs():
              "passes (of M) |", "|---|---|---|---|---|"]
     for b in SPRING_BUILDS:
         scene = f"tb/bench/springs_{b}.scene"
-        m, k = (int(x) for x in b.split("x"))
+        m, k = units_nodes(b)
         for arch, order, _ in ARCHS:
             f = rtl_figures(scene, 3, order)
             cyc, per_clock = f["cycles_per_frame"], f["springs_per_clock"]
@@ -532,12 +534,13 @@ def goals_table():
         if key == "per_unit_springs" and key in GOALS:
             b, v = GOALS[key]
             rows.append(f"| >= {GOAL_PER_UNIT} x M updates per clock on a long body (N >= 256), {what} | {b} "
-                        f"pipelined: {v:.3f} M (one spring a clock a unit, less the pipe's fill and drain each pass) "
+                        f"pipelined ({units_nodes(b)[1]} nodes a unit): {v:.3f} M (one spring a clock a unit, less the pipe's fill and drain each pass) "
                         f"| {met(v >= GOAL_PER_UNIT)} |")
         elif key in GOALS:
             b, v, v1 = GOALS[key]
             rows.append(f"| >= {GOAL_PER_UNIT} x M updates per clock on a long body (N >= 256), {what} | {b} "
-                        f"pipelined: {v:.3f} M at {GOAL_ITERS} iterations, {v1:.3f} M at 1 (one constraint a clock a "
+                        f"pipelined ({units_nodes(b)[1]} nodes a unit; the long-body table has every build): "
+                        f"{v:.3f} M at {GOAL_ITERS} iterations, {v1:.3f} M at 1 (one constraint a clock a "
                         f"unit, less the pipe's drain each substep) | {met(v >= GOAL_PER_UNIT)} at {GOAL_ITERS}, "
                         f"{met(v1 >= GOAL_PER_UNIT)} at 1 |")
     # the fmax is make synth's: every pipelined build it placed for this RTL, whether or not a row above runs it
