@@ -339,6 +339,8 @@ def gather(bdir, gen, srcs):
         if b in PIPE_PACK:
             ok = res[b].get("ecp5_place") is not None and run_pnr(b, "ecp5", None, bdir, record, offline=True) != "missing"
             packs[b] = load_pack(bdir, b) if ok else None
+            if packs[b] is not None and any(u[0] > u[1] for u in packs[b].get("util", {}).values()):
+                packs[b]["fits"] = False  # a packing recorded before pnr_outcome judged capacity
             missing += [] if ok else [f"{b} nextpnr-ecp5 packing"]
     return res, pnr, packs, missing
 

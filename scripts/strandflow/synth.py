@@ -386,6 +386,8 @@ def pnr_outcome(text, rc):
             if "clk" in c]
     errors = re.findall(r"^ERROR: (.*)$", text, re.M)
     over = {n: u for n, u in util.items() if u[0] > u[1]}
+    if over:  # nextpnr's packing exits 0 over the device's capacity: only a placement would fail
+        return dict(fits=False, util=util, over=over, error=errors[0] if errors else "")
     if rc == 0:
         return dict(fits=True, util=util, fmax_mhz=fmax[-1][1] if fmax else None, critical=critical_path(text))
     if over or any("no BELs remaining" in e or "Unable to place" in e or "Failed to expand region" in e for e in errors):
