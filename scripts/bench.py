@@ -45,7 +45,7 @@ BUILDS = ["4x5", "8x8", "16x16"]
 PHYS_BUILDS = ["4x5", "8x8", "16x16", "1x256", "2x256", "8x128", "4x256", "2x512"]
 # Q10.8 chains (W = 18: a third of the multipliers a unit), pipelined only, with their rule: the
 # 1024-node rope make synth places, and the 3072-node one of the pairwise rule it packs (one pipe
-# a unit, so more units fit)
+# a unit; its logic does not fit the device: docs/resources.md)
 NARROW_BUILDS = [("q10_4x256", "centred"), ("q10_12x256", "pairwise")]
 RULES = ["centred", "pairwise"]   # the pairwise scenes: bench_<build>.scene with rule = pairwise
 PHYS_FRAMES = 10          # frames of the RTL run (every frame takes the same cycles)
@@ -220,8 +220,10 @@ def units_nodes(b):
 
 
 def width_of(b):
-    """The bench build's number format as the page names it."""
-    return "Q10.8" if b.startswith("q10_") else "Q16.16"
+    """The bench build's number format as the page names it, from its scene's [format]."""
+    text = open(os.path.join(ROOT, f"tb/bench/bench_{b}.scene")).read()
+    w, f = (int(re.search(rf"^{k} = (\d+)$", text, re.M).group(1)) for k in ("width", "frac"))
+    return f"Q{w - f}.{f}"
 
 
 def long_bodies(rows):
