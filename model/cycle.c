@@ -132,9 +132,9 @@ void cyc_get_outputs(const cyc_model *c, cyc_outputs *o)
     o->frame_done = c->frame_done;
     o->busy = c->phase != PH_IDLE;
     o->irq = c->irq;
-    o->rd_x = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_x[c->rd_u_q]) : 0;
-    o->rd_y = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_y[c->rd_u_q]) : 0;
-    o->rd_z = c->rd_u_q < (uint32_t)m ? to_word(f, c->b_z[c->rd_u_q]) : 0;
+    o->rd_x = c->rd_u_q2 < (uint32_t)m ? to_word(f, c->bq_x[c->rd_u_q2]) : 0;
+    o->rd_y = c->rd_u_q2 < (uint32_t)m ? to_word(f, c->bq_y[c->rd_u_q2]) : 0;
+    o->rd_z = c->rd_u_q2 < (uint32_t)m ? to_word(f, c->bq_z[c->rd_u_q2]) : 0;
     o->phase = c->phase;
     o->fv = c->done;
     /* FEC: the pass's last node (centred), link (pairwise chain) or edge (graph) is done */
@@ -228,7 +228,7 @@ static void reset_all(cyc_model *c)
     c->running = c->done = false;
     c->vidx = 0;
     c->pass_a = c->pass_b = c->pass_c = c->pass_d = false;
-    for (int u = 0; u < c->hp.m; u++) c->b_x[u] = c->b_y[u] = c->b_z[u] = 0;
+    for (int u = 0; u < c->hp.m; u++) c->b_x[u] = c->b_y[u] = c->b_z[u] = c->bq_x[u] = c->bq_y[u] = c->bq_z[u] = 0;
     for (int l = 0; l < c->hp.wb; l++) {
         c->wb_valid[l] = false;
         c->wb_idx[l] = 0;
@@ -587,7 +587,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     uint32_t rd_u = in->rd_addr >> hp->iw & ((1u << hp->uw) - 1), rd_n = in->rd_addr & ((1u << hp->iw) - 1);
 
     c->cycle++;
-    c->rd_u_q = rd_u; /* strand_core rd_u_q: not reset, follows rd_addr */
+    c->rd_u_q2 = c->rd_u_q; /* strand_core rd_u_q, rd_u_q2: not reset, follow rd_addr */
+    c->rd_u_q = rd_u;
     if (in->reset) {
         reset_all(c);
         return;
@@ -610,9 +611,13 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool verlet_start = (substep_start && !hp->en_springs) || (c->phase == PH_FORCE && force_done);
     const bool seq_start = verlet_end && hp->en_constraints;
 
-    /* node_unit port B: every unit samples node rd_n before this edge's writes. */
+    /* node_unit port B: every unit registers the word it read last cycle (b_pos_q) and
+     * samples node rd_n before this edge's writes. */
     for (int u = 0; u < m; u++) {
         bool ok = rd_n < (uint32_t)k;
+        c->bq_x[u] = c->b_x[u];
+        c->bq_y[u] = c->b_y[u];
+        c->bq_z[u] = c->b_z[u];
         c->b_x[u] = ok ? c->s.pos[u * k + (int)rd_n][0] : 0;
         c->b_y[u] = ok ? c->s.pos[u * k + (int)rd_n][1] : 0;
         c->b_z[u] = ok ? c->s.pos[u * k + (int)rd_n][2] : 0;

@@ -84,7 +84,7 @@ typedef struct {
     fx_t init_pos[3], start[3], step[3], prev_off[3];
     fx_t load[2][3];   /* LOAD_X..Z, LOAD_PX..PZ */
     fx_t edge_rest;    /* EDGE_REST */
-    uint32_t rd_u_q;
+    uint32_t rd_u_q, rd_u_q2; /* strand_core: the read port's unit, one and two cycles after rd_addr */
     /* node units (they run in step) */
     bool running, done;
     bool ground_pass; /* the pass under way is the ground pass */
@@ -97,7 +97,8 @@ typedef struct {
     int idx_c;
     bool pass_d, ground_d; /* stage D: it is written */
     int idx_d;
-    fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS];
+    fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS]; /* port B: the word read (b_ok applied) */
+    fx_t bq_x[CYC_MAX_UNITS], bq_y[CYC_MAX_UNITS], bq_z[CYC_MAX_UNITS]; /* node_unit b_pos_q: that word a cycle later */
     bool wb_valid[CYC_MAX_LANES];   /* the write-back lanes (WB of them) */
     uint32_t wb_idx[CYC_MAX_LANES];
     fx_t wb_x[CYC_MAX_LANES], wb_y[CYC_MAX_LANES], wb_z[CYC_MAX_LANES];

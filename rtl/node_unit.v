@@ -25,8 +25,9 @@
  *
  * Storage reads are synchronous (data the cycle after the address), read before
  * write. Port A serves the pass and, between passes, the sequencers and the grab
- * scan; port B is the external position read port: a node not written since reset
- * reads as 0 there (the written flags), so the port never shows undefined storage.
+ * scan; port B is the external position read port (the word two cycles after its
+ * index: the memory's read, then a register): a node not written since reset reads as
+ * 0 there (the written flags), so the port never shows undefined storage.
  * The node memories are filled by the init walk or NODE loads (w_at_rest), never by
  * reset: after reset a step before they are filled computes on undefined values.
  *
@@ -102,7 +103,7 @@ module node_unit #(
     input  wire [IW-1:0]    w2_idx,
     input  wire [DIM*W-1:0] w2_pos,
 
-    // port B: external position reads
+    // port B: external position reads, the word two cycles after the index
     input  wire [IW-1:0]    b_idx,
     output wire [DIM*W-1:0] b_pos,
 
@@ -330,12 +331,22 @@ module node_unit #(
         end
     endgenerate
 
-    // ---- port B: a node not written since reset reads as 0 ----
+    // ---- port B: a node not written since reset reads as 0; the word is registered once
+    // more (b_pos two cycles after b_idx), so that the path from the block RAM's
+    // unregistered output ends here and the core's selection over the units starts from a
+    // flip-flop: that path (block RAM, bank select, unit select, bus) set the clock of the
+    // multi-unit builds ----
     reg              b_ok;
+    reg [DIM*W-1:0]  b_pos_q;
     always @(posedge clk)
-        if (reset) b_ok <= 1'b0;
-        else b_ok <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
-    assign b_pos = b_ok ? b_pos_raw : {(DIM*W){1'b0}};
+        if (reset) begin
+            b_ok    <= 1'b0;
+            b_pos_q <= {(DIM*W){1'b0}};
+        end else begin
+            b_ok    <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
+            b_pos_q <= b_ok ? b_pos_raw : {(DIM*W){1'b0}};
+        end
+    assign b_pos = b_pos_q;
 
     // ---- the write-back lanes (DEBUG) ----
     generate

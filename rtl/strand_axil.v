@@ -33,8 +33,8 @@
  * Channels: a write is accepted when its address and data are both valid and the
  * response channel is free (AWREADY = WREADY in that cycle), one per cycle while
  * BREADY is high; its response follows in the next cycle. A read is accepted when
- * the read channel is free; its data follow two cycles later (the core's read port
- * has one cycle of latency). Reads and writes proceed independently.
+ * the read channel is free; its data follow three cycles later (the core's read port
+ * has two cycles of latency). Reads and writes proceed independently.
  *
  * irq = the core's frame-done interrupt and the enable: a level, high until STATUS
  * bit 1 is written 1.
@@ -173,11 +173,12 @@ module strand_axil #(
         else if (frame_done) frames <= frames + 1'b1;
     end
 
-    // ---- reads: accepted when the read channel is free, answered two cycles later ----
-    reg               rd_pending;  // a read was accepted in the last cycle
+    // ---- reads: accepted when the read channel is free, answered three cycles later ----
+    reg               rd_wait;     // a read was accepted in the last cycle
+    reg               rd_pending;  // a read was accepted two cycles ago: the core's data arrive now
     reg  [ADDR_W-1:0] ra_q;
-    reg               ra_node_q;   // it reads a node (its data arrive now)
-    assign s_axil_arready = !rd_pending && !s_axil_rvalid;
+    reg               ra_node_q;   // it reads a node
+    assign s_axil_arready = !rd_wait && !rd_pending && !s_axil_rvalid;
     wire do_read = s_axil_arvalid && s_axil_arready;
 
     wire [ADDR_W-1:0] ra = s_axil_araddr;
@@ -193,7 +194,7 @@ module strand_axil #(
         end
     endfunction
 
-    // the answer to the read in ra_q, in the cycle after it was accepted
+    // the answer to the read in ra_q, two cycles after it was accepted
     reg [31:0] r_data;
     reg        r_ok;
     wire [UW-1:0] ru = ra_q[4+IW +: UW];
@@ -223,6 +224,7 @@ module strand_axil #(
 
     always @(posedge clk) begin
         if (reset) begin
+            rd_wait       <= 1'b0;
             rd_pending    <= 1'b0;
             ra_q          <= {ADDR_W{1'b0}};
             ra_node_q     <= 1'b0;
@@ -230,7 +232,8 @@ module strand_axil #(
             s_axil_rresp  <= OKAY;
             s_axil_rdata  <= 32'd0;
         end else begin
-            rd_pending <= do_read;
+            rd_wait    <= do_read;
+            rd_pending <= rd_wait;
             if (do_read) begin
                 ra_q      <= ra;
                 ra_node_q <= ra_node;

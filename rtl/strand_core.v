@@ -25,8 +25,9 @@
  * one NODE write per node and one EDGE write per edge), then pulse step once per
  * frame (when busy is low); frame_done pulses at the end of each frame and sets irq
  * until a write of IRQ_ACK. The mouse is sampled when a frame starts. rd_addr
- * ({unit, node}) reads a node's position the next cycle (0 for a node not written
- * since reset, or an address past the last node).
+ * ({unit, node}) reads a node's position two cycles later (0 for a node not written
+ * since reset, or an address past the last node; writes of the cycle rd_addr is
+ * presented are not seen).
  *
  * dbg (DEBUG = 1, for verification; else one constant bit) shows, LSB first: phase
  * [3], FV, FEC, the walk's uidx [UW], nidx [IW] and counter [CW], and the
@@ -61,7 +62,7 @@ module strand_core #(
     input  wire            mouse_down,
 
     input  wire [AW-1:0]   rd_addr,     // position read port: {unit, node} in,
-    output wire [W-1:0]    rd_x,        // its position the next cycle
+    output wire [W-1:0]    rd_x,        // its position two cycles later
     output wire [W-1:0]    rd_y,
     output wire [W-1:0]    rd_z,        // DIM = 3; else 0
 
@@ -365,11 +366,15 @@ module strand_core #(
     endgenerate
     assign fv = &done_all;
 
-    // ---- the read port ----
-    reg [UW-1:0] rd_u_q;
-    always @(posedge clk) rd_u_q <= rd_addr[AW-1:IW];
-    wire          rd_ok  = {1'b0, rd_u_q} < M_COUNT;  // past the last unit: 0, never X
-    wire [DW-1:0] rd_pos = rd_ok ? b_pos_all[rd_u_q * DW +: DW] : {DW{1'b0}};
+    // ---- the read port: every unit's port B reads node rd_addr's word (memory, then a
+    // register: two cycles), and the unit is chosen after, from flip-flops ----
+    reg [UW-1:0] rd_u_q, rd_u_q2;
+    always @(posedge clk) begin
+        rd_u_q  <= rd_addr[AW-1:IW];
+        rd_u_q2 <= rd_u_q;
+    end
+    wire          rd_ok  = {1'b0, rd_u_q2} < M_COUNT;  // past the last unit: 0, never X
+    wire [DW-1:0] rd_pos = rd_ok ? b_pos_all[rd_u_q2 * DW +: DW] : {DW{1'b0}};
     assign rd_x = rd_pos[0 +: W];
     assign rd_y = rd_pos[W +: W];
     generate

@@ -174,9 +174,10 @@ module tb_top_frames #(
                          frame + 1, sig, status_mem[4 * frame + 3]);
                 $fatal(1);
             end
-            // read every node back: address in, data the next cycle
+            // read every node back: address in, data two cycles later
             for (node = 0; node < N; node = node + 1) begin
                 rd_addr = ((node / K) << IW) | (node % K);
+                @(posedge clk);
                 @(posedge clk);
                 #1;
                 want_x = expect_mem[3 * (frame * N + node)][W-1:0];

@@ -88,7 +88,7 @@ module axil_props #(
     wire w_acc = awvalid && awready;             // (== wvalid && wready, checked below)
     wire r_acc = arvalid && arready;
     reg  [1:0] wpend, rpend;                     // accepted and not yet answered
-    reg  [1:0] r_age;                            // cycles since the read was accepted
+    reg  [2:0] r_age;                            // cycles since the read was accepted (to 4)
     reg        b_prev_valid, b_prev_ready, r_prev_valid, r_prev_ready;
     reg  [1:0] bresp_p, rresp_p;
     reg [31:0] rdata_p;
@@ -114,11 +114,11 @@ module axil_props #(
         if (reset) begin
             wpend <= 2'd0;
             rpend <= 2'd0;
-            r_age <= 2'd0;
+            r_age <= 3'd0;
         end else begin
             wpend <= wpend + (w_acc ? 2'd1 : 2'd0) - (bvalid && bready ? 2'd1 : 2'd0);
             rpend <= rpend + (r_acc ? 2'd1 : 2'd0) - (rvalid && rready ? 2'd1 : 2'd0);
-            r_age <= r_acc ? 2'd1 : (r_age != 0 && r_age != 2'd3 ? r_age + 2'd1 : r_age);
+            r_age <= r_acc ? 3'd1 : (r_age != 0 && r_age != 3'd4 ? r_age + 3'd1 : r_age);
         end
         if (w_acc) begin
             if (wstrb != 4'hF)                             w_expect <= 2'd2;
@@ -157,7 +157,8 @@ module axil_props #(
             if (awready) assert (awvalid && wvalid);
             assert (wpend <= 2'd1 && rpend <= 2'd1);
             assert (bvalid == (wpend == 2'd1));
-            assert (rvalid == (rpend == 2'd1 && r_age == 2'd2 || rpend == 2'd1 && r_age == 2'd3));
+            // the answer three cycles after the read is accepted (the core's read port takes two)
+            assert (rvalid == (rpend == 2'd1 && r_age == 3'd3 || rpend == 2'd1 && r_age == 3'd4));
             if (rpend == 2'd1) assert (!arready);
             if (b_prev_valid && !b_prev_ready) assert (bvalid && bresp == bresp_p);
             if (r_prev_valid && !r_prev_ready) assert (rvalid && rresp == rresp_p && rdata == rdata_p);
