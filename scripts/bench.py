@@ -213,6 +213,11 @@ def physics():
     return lines + notes + [x for b, sc in ROPES for x in rope(rows, b, sc)]
 
 
+def counted(n, word):
+    """'1 substep', '4 substeps'."""
+    return f"{n} {word}{'' if n == 1 else 's'}"
+
+
 def units_nodes(b):
     """(M, K) of a bench build's name: 4x256, q10_4x256."""
     m, k = re.search(r"(\d+)x(\d+)$", b).groups()
@@ -332,8 +337,8 @@ def rope(rows, rope_b, rest_scene):
     cpu_ok = [p for p in points if p["cpu_fps"] >= 60 and p["gh2"] >= 0.5]
     if mhz:
         out.append(f"At {rope_b}'s fmax of {mhz:.1f} MHz every row but those over {mhz:.1f} MHz runs at 60 frames/s"
-                   + (f"; the best stretch at rest among them is **{best['sfin']:.4f} %** ({best['subs']} substeps x "
-                      f"{best['iters']} iterations)." if best else ": none does."))
+                   + (f"; the best stretch at rest among them is **{best['sfin']:.4f} %** ({counted(best['subs'], 'substep')} x "
+                      f"{counted(best['iters'], 'iteration')})." if best else ": none does."))
     else:
         out.append(f"The {rope_b} pipelined build has no fmax from make synth (docs/resources.md), so which rows run at "
                    "60 frames/s on it is not measured; the column *clock for 60 frames/s* says what each needs.")
@@ -574,7 +579,7 @@ def goals_table():
         where = f"at 60 frames/s on {rope_b} at its fmax, {mhz:.1f} MHz" if mhz else \
             f"({rope_b} has no fmax: at the clock its row says 60 frames/s need)"
         rows.append(f"| the 1024-node rope at rest: stretch <= {GOAL_STRETCH} % | {width_of(rope_b)}: {st:.4f} % with "
-                    f"{subs} substeps x {iters} iterations, {where} | {met(st <= GOAL_STRETCH)} |")
+                    f"{counted(subs, 'substep')} x {counted(iters, 'iteration')}, {where} | {met(st <= GOAL_STRETCH)} |")
     return ["## The goals, measured", "",
             "The speed work's four goals against the figures of this page (the sections below say how each is "
             "measured).", "", "| goal | measured | |", "|---|---|---|", *rows, ""]
