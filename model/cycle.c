@@ -644,26 +644,30 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             lane_write(c, written, node / k, node % k, node);
         }
     }
-    /* A pass's stage D (node_unit): node idx_d of every unit is written. Its read was four
-       edges ago (ARCH = 1: five); nothing else writes a node during a pass, so computing it here, from
-       the storage as it is now, is the same. */
-    if (c->pass_d && c->ground_d) {
-        for (int u = 0; u < m; u++) {
-            int node = u * k + c->idx_d;
-            if (sim_fx_ground_node(&c->s, node)) lane_write(c, written, u, c->idx_d, node);
-        }
-    } else if (c->pass_d) {
-        for (int u = 0; u < m; u++) {
-            int node = u * k + c->idx_d;
-            for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
-            c->s.mouse_down = c->mouse_down_q;
-            if (sim_fx_verlet_node(&c->s, node)) {
-                if (hp->en_mouse && !hp->grab) sim_fx_mouse_node(&c->s, node);
-                lane_write(c, written, u, c->idx_d, node);
+    /* A pass's stage D (node_unit): node idx_d of every unit is written; with PAIR row idx_d,
+       its even node through write port 0 and its odd one (if there is one) through port 1. Its
+       read was four edges ago (ARCH = 1: five); nothing else writes a node during a pass, so
+       computing it here, from the storage as it is now, is the same. */
+    if (c->pass_d) {
+        const int ways = hp->pair ? 2 : 1;
+        for (int u = 0; u < m; u++)
+            for (int way = 0; way < ways; way++) {
+                const int idx = c->idx_d * ways + way;
+                if (idx >= k) continue;
+                const int node = u * k + idx;
+                if (c->ground_d) {
+                    if (sim_fx_ground_node(&c->s, node)) lane_write_port(c, written, u, way, idx, node);
+                    continue;
+                }
+                for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
+                c->s.mouse_down = c->mouse_down_q;
+                if (sim_fx_verlet_node(&c->s, node)) {
+                    if (hp->en_mouse && !hp->grab) sim_fx_mouse_node(&c->s, node);
+                    lane_write_port(c, written, u, way, idx, node);
+                }
+                /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
+                for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
             }
-            /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
-            for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
-        }
     }
     /* chain_stream: a sweep's writes are planned as it starts and land in their cycles, the
        previous sweep's (SP cycles along) while this one starts. */
@@ -780,7 +784,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->sq_state = next;
     }
 
-    /* node_unit pass FSM: the data arrive (running, vidx); stage A (serial: the same cycle;
+    /* node_unit pass FSM: the data arrive (running, vidx: a node, with PAIR a row); stage A (serial: the same cycle;
        ARCH = 1: pass_a, idx_a, the cycle after), stage B (pass_b, idx_b), stage C (pass_c, idx_c). */
     const bool stage_a = hp->arch ? c->pass_a : c->running, ground_a = hp->arch ? c->ground_a : c->ground_pass;
     const int idx_a = hp->arch ? c->idx_a : c->vidx;
@@ -798,11 +802,12 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->vidx = 0;
         c->ground_pass = !verlet_start;
     } else {
+        const int last_step = (int)hw_pass_steps(hp) - 1; /* node, or with PAIR row, of the pass */
         if (c->running) {
-            if (c->vidx == k - 1) c->running = false;
+            if (c->vidx == last_step) c->running = false;
             c->vidx = (c->vidx + 1) & ((1 << hp->iw) - 1);
         }
-        if (c->pass_d && c->idx_d == k - 1) c->done = true; /* the last node is written */
+        if (c->pass_d && c->idx_d == last_step) c->done = true; /* the last node (row) is written */
     }
     c->pass_a = hp->arch && pass_a_next;
     if (c->pass_a) {

@@ -118,11 +118,12 @@ long hw_spring_pass(const hw_params *hp)
 }
 
 /* The terms of a substep and of a frame. */
-/* node_unit: K nodes through a four-stage pass (the last written 4 cycles after its read; 5 with
-   ARCH = 1, whose stage R registers the words first), FV; with constraints the sequencer starts
-   the cycle after */
+long hw_pass_steps(const hw_params *hp) { return hp->pair ? (hp->k + 1) / 2 : hp->k; }
+/* node_unit: K nodes (PAIR: K/2 rows, rounded up) through a four-stage pass (the last written 4
+   cycles after its read; 5 with ARCH = 1, whose stage R registers the words first), FV; with
+   constraints the sequencer starts the cycle after */
 static long pass_stages(const hw_params *hp) { return hp->arch ? 5 : 4; }
-static long verlet_phase(const hw_params *hp) { return hp->k + pass_stages(hp) + (hp->en_constraints ? 1 : 0); }
+static long verlet_phase(const hw_params *hp) { return hw_pass_steps(hp) + pass_stages(hp) + (hp->en_constraints ? 1 : 0); }
 static long constrain_phase(const hw_params *hp)
 {
     if (!hp->en_constraints) return 0;
@@ -131,7 +132,7 @@ static long constrain_phase(const hw_params *hp)
     return hp->iter * hw_constraint_pass(hp);
 }
 static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
-static long ground_phase(const hw_params *hp) { return hp->en_ground ? hp->k + pass_stages(hp) : 0; }
+static long ground_phase(const hw_params *hp) { return hp->en_ground ? hw_pass_steps(hp) + pass_stages(hp) : 0; }
 static long grab_phase(const hw_params *hp) { return hp->grab && hp->en_mouse ? node_count(hp) + 1 : 0; }
 
 long hw_cycles_per_frame(const hw_params *hp)
@@ -143,6 +144,8 @@ long hw_cycles_per_frame(const hw_params *hp)
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
     char pipe[320] = "", last[96] = "", steps[160] = "";
+    /* a pipelined chain (PAIR) steps two nodes a clock, one of each bank, in its Verlet and ground passes */
+    const char *steps_term = hp->pair ? "ceil(K/2)" : "K";
     if (hp->arch) /* the pipes' root and divider: LSQ and LDV, BITS + 2 with one iteration a stage */
         snprintf(steps, sizeof steps, "; LSQ = ceil((SQRT_BITS + 1) / PIPE_STEPS) + 1 = %ld, LDV = ceil((DIV_BITS + 1) / PIPE_STEPS) + 1 = %ld",
                  hw_sqrt_pipe_latency(hp), hw_div_pipe_latency(hp));
@@ -157,7 +160,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "%s"
                     "constraint pass = %s = %ld%s\n"
                     "spring pass = %s = %ld\n"
-                    "substep = Verlet (K + %s with constraints, else K + %s) + %s [+ spring pass] [+ ground K + %s] = %ld\n"
+                    "substep = Verlet (%s + %s with constraints, else K + %s) + %s [+ spring pass] [+ ground %s + %s] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
@@ -167,8 +170,8 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
                     chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)" : "1 + links (LS + 5)",
-                    hw_spring_pass(hp), hp->arch ? "6" : "5", hp->arch ? "5" : "4",
-                    chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes", hp->arch ? "5" : "4",
+                    hw_spring_pass(hp), steps_term, hp->arch ? "6" : "5", hp->arch ? "5" : "4",
+                    chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes", steps_term, hp->arch ? "5" : "4",
                     verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

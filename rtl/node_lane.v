@@ -10,9 +10,15 @@
  * Storage (strand_ram, reset-free): pos (positions; port A for the pass and the
  * sequencers, port B for the external read port), prev (previous positions) and,
  * with EN_SPRINGS, acc (the spring force gathered this substep). With PAIR (a chain's
- * pipelined constraint pass) pos and prev are bank_rams of two banks, even and odd
- * nodes: the pass reads a pair of neighbours a clock (q_e, q_o, qp_e, qp_o) and writes
- * up to two (the second write port, pos only); every other reader still sees one port A.
+ * pipelined constraint pass) they are bank_rams of two banks, even and odd nodes: the
+ * constraint pass reads a pair of neighbours a clock (q_e, q_o, qp_e, qp_o) and writes
+ * up to two (the second write port, pos only), and the Verlet and ground passes read a
+ * row a clock (nodes 2r and 2r + 1) and write both (pos, prev and the force's clear on
+ * both write ports); every other reader still sees one port A.
+ *
+ * Ways: the per-node step below is built once, or with PAIR twice (way 0 the even
+ * node of a row, way 1 the odd one), so a pass takes one node a clock, or with PAIR
+ * two. Way 0 writes through write port 1, way 1 through write port 2.
  *
  * The Verlet step of this axis, from port A's data q, qp, qa (model/engine_body.h
  * verlet_node(), every operation a saturating fx_add / fx_mul in the model's order):
@@ -38,9 +44,9 @@
  * rest of the Verlet step (damping, x + v, gravity, the spring force), or the ground
  * pass's bounce and friction. Stage C: the mouse's in-touch test on this axis and the
  * impulse's sum. Stage W (the write): the impulse chosen (every axis in touch) and the write. So
- * no path holds more than two of the step's adders; a node is written four cycles
- * after its address (ARCH = 1: five). Storage reads are synchronous (address now, data next cycle),
- * read before write.
+ * no path holds more than two of the step's adders; a node (with PAIR a row) is written
+ * four cycles after its address (ARCH = 1: five). Storage reads are synchronous (address
+ * now, data next cycle), read before write.
  */
 module node_lane #(
 `include "strand_params.vh"
@@ -60,24 +66,27 @@ module node_lane #(
     input  wire [IW-1:0] acc_clear_idx,
     input  wire          acc_we,     // the spring pass writes the force of node widx
     input  wire [W-1:0]  acc_w,
-    // PAIR (the chain's pipelined constraint pass): a pair read instead of port A (the
-    // even bank at row pair_row_e, the odd bank at pair_row_o), and a second position
-    // write, to the other bank than the first write's
+    // PAIR: a pair read instead of port A (the even bank at row pair_row_e, the odd bank
+    // at pair_row_o: the constraint pass's pairs, the Verlet pass's rows), and a second
+    // write, to the other bank than the first write's: the constraint pass's position,
+    // or the pass's way 1 (position, previous position with wprev2, the force cleared)
     input  wire          pair_re,
     input  wire [IW-1:0] pair_row_e,
     input  wire [IW-1:0] pair_row_o,
     input  wire          we2,
+    input  wire          wprev2,
+    input  wire          acc_clear2,
     input  wire [IW-1:0] widx2,
-    input  wire [W-1:0]  wdata2,
+    input  wire [W-1:0]  w2_pos,     // the constraint pass's data (when no pass writes)
 
-    // the pass pipeline (node_unit's stage valids) and how the write is formed
+    // the pass pipeline (node_unit's stage valids, one set for both ways) and how the write is formed
     input  wire          stage_r,    // ARCH = 1: a pass's node's data arrive now (stage R registers them)
     input  wire          stage_a,    // a pass's node is in stage A (serial: its data arrive now)
     input  wire          stage_b,    //   in stage B
     input  wire          stage_c,    //   in stage C
     input  wire          pass_w,     //   in stage W: write its result
     input  wire          ground_w,   //   the ground pass
-    input  wire          grab_w,     //   the node is the grabbed one (GRAB)
+    input  wire [PAIR:0] grab_w,     //   the way's node is the grabbed one (GRAB)
     input  wire          w_pin,      // an external write to a pinned node: at rest
     input  wire [W-1:0]  w_pos,      // external write data
     input  wire [W-1:0]  w_prev,
@@ -89,7 +98,7 @@ module node_lane #(
     input  wire [W:0]    touch_lo,   // mouse - box, exact: in touch when touch_lo < n < touch_hi
     input  wire [W:0]    touch_hi,   // mouse + box
     input  wire [W-1:0]  mouse,      // the pointer, sampled at the frame start
-    input  wire          in_touch,   // every axis touches and the button is down (lane 0's impulse)
+    input  wire [PAIR:0] in_touch,   // a way's node: every axis touches and the button is down (lane 0's impulse)
     input  wire [W-1:0]  ground,     // the ground boundary (on the normal axis)
     input  wire [W-1:0]  friction,   // 1 - u
 
@@ -101,192 +110,240 @@ module node_lane #(
     output wire [W-1:0]  q_o,        //   (a pair read's, or a port-A read's two rows)
     output wire [W-1:0]  qp_e,
     output wire [W-1:0]  qp_o,
-    output wire          touch,      // stage W: |mouse - n| < box on this axis
-    output wire          hit,        // stage W, AXIS = GROUND_AXIS: past the boundary
-    output wire [W-1:0]  wdata       // what this axis writes now (the write-back lane shows it)
+    output wire [PAIR:0] touch,      // stage W, a way's node: |mouse - n| < box on this axis
+    output wire [PAIR:0] hit,        // stage W, AXIS = GROUND_AXIS: past the boundary
+    output wire [W-1:0]  wdata,      // what this axis writes now through write port 1 (the write-back lane shows it)
+    output wire [W-1:0]  wdata2      //   and through write port 2 (PAIR)
 );
 
-    // ---- the pipeline registers (datapath: the stage valids say when they hold a node) ----
-    wire [W-1:0] v;                  // stage A: q - qp
-    wire         hit_a;              // stage A: past the ground boundary
-    reg  [W-1:0] q_b, qp_b, qa_b, v_b;
-    reg          hit_b;
-    wire [W-1:0] n;                  // stage B: the Verlet result
-    wire [W-1:0] g, gp;              // stage B: the ground pass's result
-    reg  [W-1:0] n_c, q_c, g_c, gp_c;
-    reg          hit_c;
-    reg          left_c;             // the pointer is left of (below) the old position: the impulse adds
-    wire [W-1:0] pushed;             // stage C: the previous position the impulse would give (x)
-    wire         touch_c;            // stage C: in touch on this axis
-    reg  [W-1:0] n_w, q_w, g_w, gp_w, pushed_w;
-    reg          hit_w, touch_w;
-    wire [W-1:0] np;                 // stage W: the previous position after the mouse impulse
-    always @(posedge clk) begin
-        if (stage_a) begin
-            q_b   <= q_a;
-            qp_b  <= qp_a;
-            qa_b  <= qa_a;
-            v_b   <= v;
-            hit_b <= hit_a;
-        end
-        if (stage_b) begin
-            n_c    <= n;
-            q_c    <= q_b;
-            g_c    <= g;
-            gp_c   <= gp;
-            hit_c  <= hit_b;
-            left_c <= $signed(mouse) < $signed(q_b);
-        end
-        if (stage_c) begin
-            n_w      <= n_c;
-            q_w      <= q_c;
-            g_w      <= g_c;
-            gp_w     <= gp_c;
-            hit_w    <= hit_c;
-            touch_w  <= touch_c;
-            pushed_w <= pushed;
-        end
-    end
-    assign hit   = hit_w;
-    assign touch = touch_w;
+    localparam integer NW = 1 + PAIR;  // ways: nodes a pass takes a clock
 
     // ---- storage ----
-    wire [W-1:0] wprev_data;
-    assign wdata      = pass_w ? (EN_GROUND && ground_w ? g_w : GRAB && grab_w ? mouse : n_w) : w_pos;
-    assign wprev_data = pass_w ? (EN_GROUND && ground_w ? gp_w : np) : w_pin ? w_pos : w_prev;
+    wire [NW*W-1:0] n_way, np_way, gr_way, grp_way;   // stage W: each way's results (below)
+    wire [W-1:0]    qa_e, qa_o;                     // the force memory's banks
+    wire [W-1:0]    wprev_data, wprev_data2;
+    assign wdata      = pass_w ? (EN_GROUND && ground_w ? gr_way[0 +: W] : GRAB && grab_w[0] ? mouse : n_way[0 +: W]) : w_pos;
+    assign wprev_data = pass_w ? (EN_GROUND && ground_w ? grp_way[0 +: W] : np_way[0 +: W]) : w_pin ? w_pos : w_prev;
+    generate
+        if (PAIR != 0) begin : g_wdata2
+            assign wdata2      = pass_w ? (EN_GROUND && ground_w ? gr_way[W +: W] : GRAB && grab_w[PAIR] ? mouse : n_way[W +: W]) : w2_pos;
+            assign wprev_data2 = EN_GROUND && ground_w ? grp_way[W +: W] : np_way[W +: W];
+        end else begin : g_no_wdata2
+            assign wdata2      = {W{1'b0}};
+            assign wprev_data2 = {W{1'b0}};
+            wire unused_w2 = &{1'b0, w2_pos, wprev2, acc_clear2};
+        end
+    endgenerate
 
     // positions and previous positions: two banks with PAIR (the second write port and the
-    // pair read are the pipelined pass's; the previous positions have only the first)
+    // pair read are the pipelined passes')
     bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR)) u_pos (
         .clk(clk), .we(we), .waddr(widx), .wdata(wdata), .we2(PAIR != 0 && we2), .waddr2(widx2), .wdata2(wdata2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(q),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(q_e), .rdata_o(q_o),
         .re_b(1'b1), .raddr_b(b_addr), .rdata_b(b_data));
     /* verilator lint_off PINCONNECTEMPTY */
-    // the previous positions and the forces have one reader (port A)
+    // the previous positions and the forces have one reader (port A, or the pair read)
     bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_prev (
-        .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data), .we2(1'b0), .waddr2(widx2), .wdata2(wdata2),
+        .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
+        .we2(PAIR != 0 && we2 && wprev2), .waddr2(widx2), .wdata2(wprev_data2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qp_e), .rdata_o(qp_o),
         .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
-
-    // ---- stage R (ARCH = 1): port A's words registered the cycle they arrive, so stage A's
-    // subtract starts from a flip-flop, not from the block RAM's output ----
-    wire [W-1:0] q_a, qp_a, qa_a;    // stage A's words
-    generate
-        if (ARCH) begin : g_stage_r
-            reg [W-1:0] q_r, qp_r, qa_r;
-            always @(posedge clk)
-                if (stage_r) begin
-                    q_r  <= q;
-                    qp_r <= qp;
-                    qa_r <= qa;
-                end
-            assign q_a  = q_r;
-            assign qp_a = qp_r;
-            assign qa_a = qa_r;
-        end else begin : g_no_stage_r
-            assign q_a  = q;
-            assign qp_a = qp;
-            assign qa_a = qa;
-            wire unused_stage_r = &{1'b0, stage_r};
-        end
-    endgenerate
-
-    // ---- stage A: the velocity ----
-    // saturation flags are not needed: the saturated value is the result
-    fx_add #(.W(W), .SUB(1)) u_v (.sub(1'b1), .a(q_a), .b(qp_a), .y(v), .sat());
-
-    // ---- stage B: the rest of the Verlet step ----
-    wire [W-1:0] v_d, n1, n_g;
-    generate
-        if (EN_DAMPING) begin : g_damping
-            wire [W-1:0] dv;
-            fx_mul #(.W(W), .F(F)) u_dv (.a(v_b), .b(damping), .y(dv), .sat(), .prod());
-            fx_add #(.W(W), .SUB(1)) u_vd (.sub(1'b1), .a(v_b), .b(dv), .y(v_d), .sat());
-        end else begin : g_no_damping
-            assign v_d = v_b;
-            wire unused_damping = &{1'b0, damping};
-        end
-    endgenerate
-    fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q_b), .b(v_d), .y(n1), .sat());
-    generate
-        if (EN_GRAVITY) begin : g_gravity
-            fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
-        end else begin : g_no_gravity
-            assign n_g = n1;
-            wire unused_gravity = &{1'b0, gdt2};
-        end
-    endgenerate
 
     // ---- the spring force of this substep (a spring pass gathered it), added in stage B ----
     // The Verlet pass consumes each node's force and clears it (pinned nodes too), so the
     // next spring pass starts from 0, as model/engine_body.h force_pass() does; the init
     // walk and NODE loads clear it too (the memory is not reset).
     generate
-        if (EN_SPRINGS) begin : g_springs
-            // one reader (port A)
-            strand_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0)) u_acc (
+        if (EN_SPRINGS) begin : g_acc
+            bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_acc (
                 .clk(clk), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
                 .wdata(acc_clear ? {W{1'b0}} : acc_w),
+                .we2(PAIR != 0 && acc_clear2), .waddr2(widx2), .wdata2({W{1'b0}}),
                 .re_a(a_re), .raddr_a(a_addr), .rdata_a(qa),
+                .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qa_e), .rdata_o(qa_o),
                 .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
-            fx_add #(.W(W), .SUB(0)) u_f (.sub(1'b0), .a(n_g), .b(qa_b), .y(n), .sat());
-        end else begin : g_no_springs
-            assign qa = {W{1'b0}};
-            assign n  = n_g;
-            wire unused_springs = &{1'b0, acc_clear, acc_clear_idx, acc_we, acc_w, qa_b};
+        end else begin : g_no_acc
+            assign qa   = {W{1'b0}};
+            assign qa_e = {W{1'b0}};
+            assign qa_o = {W{1'b0}};
+            wire unused_acc = &{1'b0, acc_clear, acc_clear_idx, acc_we, acc_w, acc_clear2};
         end
     endgenerate
 
-    // ---- stages C and W, the mouse: this axis's in-touch test, and the impulse (x only) ----
+    // ---- the per-node step, one copy a way: way 0 takes the even bank's words (with one
+    // bank, port A's), way 1 the odd bank's ----
+    genvar wy;
     generate
-        if (EN_MOUSE && !GRAB) begin : g_mouse
-            // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, exact (a saturated difference
-            // is never inside the box)  <=>  mouse - box < n < mouse + box: two comparisons of
-            // n with the box frame_ctrl forms once a frame, no subtraction per node
-            wire [W:0] n_x = {n_c[W-1], n_c};
-            assign touch_c = $signed(touch_lo) < $signed(n_x) && $signed(n_x) < $signed(touch_hi);
-            if (AXIS == 0) begin : g_impulse
-                // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left
-                // of x, a comparison made in stage B); taken in stage W when every axis touches
-                fx_add #(.W(W)) u_push (.sub(!left_c), .a(n_c), .b(impulse), .y(pushed), .sat());
-                assign np = in_touch ? pushed_w : q_w;
-            end else begin : g_no_impulse
+        for (wy = 0; wy < NW; wy = wy + 1) begin : g_way
+            wire [W-1:0] q_in  = wy == 0 ? q_e : q_o;   // the words of this way's node
+            wire [W-1:0] qp_in = wy == 0 ? qp_e : qp_o;
+            wire [W-1:0] qa_in = wy == 0 ? qa_e : qa_o;
+
+            // the pipeline registers (datapath: the stage valids say when they hold a node)
+            wire [W-1:0] v;                  // stage A: q - qp
+            wire         hit_a;              // stage A: past the ground boundary
+            reg  [W-1:0] q_b, qp_b, qa_b, v_b;
+            reg          hit_b;
+            wire [W-1:0] n;                  // stage B: the Verlet result
+            wire [W-1:0] g, gp;              // stage B: the ground pass's result
+            reg  [W-1:0] n_c, q_c, g_c, gp_c;
+            reg          hit_c;
+            reg          left_c;             // the pointer is left of (below) the old position: the impulse adds
+            wire [W-1:0] pushed;             // stage C: the previous position the impulse would give (x)
+            wire         touch_c;            // stage C: in touch on this axis
+            reg  [W-1:0] n_w, q_w, g_w, gp_w, pushed_w;
+            reg          hit_w, touch_w;
+            wire [W-1:0] np;                 // stage W: the previous position after the mouse impulse
+            wire [W-1:0] q_a, qp_a, qa_a;    // stage A's words
+            always @(posedge clk) begin
+                if (stage_a) begin
+                    q_b   <= q_a;
+                    qp_b  <= qp_a;
+                    qa_b  <= qa_a;
+                    v_b   <= v;
+                    hit_b <= hit_a;
+                end
+                if (stage_b) begin
+                    n_c    <= n;
+                    q_c    <= q_b;
+                    g_c    <= g;
+                    gp_c   <= gp;
+                    hit_c  <= hit_b;
+                    left_c <= $signed(mouse) < $signed(q_b);
+                end
+                if (stage_c) begin
+                    n_w      <= n_c;
+                    q_w      <= q_c;
+                    g_w      <= g_c;
+                    gp_w     <= gp_c;
+                    hit_w    <= hit_c;
+                    touch_w  <= touch_c;
+                    pushed_w <= pushed;
+                end
+            end
+            assign hit[wy]   = hit_w;
+            assign touch[wy] = touch_w;
+            assign n_way[wy*W +: W]  = n_w;
+            assign np_way[wy*W +: W] = np;
+            assign gr_way[wy*W +: W]  = g_w;
+            assign grp_way[wy*W +: W] = gp_w;
+
+            // stage R (ARCH = 1): the words registered the cycle they arrive, so stage A's
+            // subtract starts from a flip-flop, not from the block RAM's output
+            if (ARCH) begin : g_stage_r
+                reg [W-1:0] q_r, qp_r, qa_r;
+                always @(posedge clk)
+                    if (stage_r) begin
+                        q_r  <= q_in;
+                        qp_r <= qp_in;
+                        qa_r <= qa_in;
+                    end
+                assign q_a  = q_r;
+                assign qp_a = qp_r;
+                assign qa_a = qa_r;
+            end else begin : g_no_stage_r
+                assign q_a  = q_in;
+                assign qp_a = qp_in;
+                assign qa_a = qa_in;
+            end
+
+            // stage A: the velocity (saturation flags are not needed: the saturated value is the result)
+            fx_add #(.W(W), .SUB(1)) u_v (.sub(1'b1), .a(q_a), .b(qp_a), .y(v), .sat());
+
+            // stage B: the rest of the Verlet step
+            wire [W-1:0] v_d, n1, n_g;
+            if (EN_DAMPING) begin : g_damping
+                wire [W-1:0] dv;
+                fx_mul #(.W(W), .F(F)) u_dv (.a(v_b), .b(damping), .y(dv), .sat(), .prod());
+                fx_add #(.W(W), .SUB(1)) u_vd (.sub(1'b1), .a(v_b), .b(dv), .y(v_d), .sat());
+            end else begin : g_no_damping
+                assign v_d = v_b;
+            end
+            fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q_b), .b(v_d), .y(n1), .sat());
+            if (EN_GRAVITY) begin : g_gravity
+                fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
+            end else begin : g_no_gravity
+                assign n_g = n1;
+            end
+            if (EN_SPRINGS) begin : g_springs
+                fx_add #(.W(W), .SUB(0)) u_f (.sub(1'b0), .a(n_g), .b(qa_b), .y(n), .sat());
+            end else begin : g_no_springs
+                assign n = n_g;
+                wire unused_springs = &{1'b0, qa_b};
+            end
+
+            // stages C and W, the mouse: this axis's in-touch test, and the impulse (x only)
+            if (EN_MOUSE && !GRAB) begin : g_mouse
+                // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, exact (a saturated difference
+                // is never inside the box)  <=>  mouse - box < n < mouse + box: two comparisons of
+                // n with the box frame_ctrl forms once a frame, no subtraction per node
+                wire [W:0] n_x = {n_c[W-1], n_c};
+                assign touch_c = $signed(touch_lo) < $signed(n_x) && $signed(n_x) < $signed(touch_hi);
+                if (AXIS == 0) begin : g_impulse
+                    // px = mouse < x ? n + a : n - a (one adder: a subtract when the pointer is not left
+                    // of x, a comparison made in stage B); taken in stage W when every axis touches
+                    fx_add #(.W(W)) u_push (.sub(!left_c), .a(n_c), .b(impulse), .y(pushed), .sat());
+                    assign np = in_touch[wy] ? pushed_w : q_w;
+                end else begin : g_no_impulse
+                    assign pushed = q_c;
+                    assign np = q_w;
+                    wire unused_impulse = &{1'b0, left_c, pushed_w};
+                end
+            end else begin : g_no_mouse
+                assign touch_c = 1'b1;
                 assign pushed = q_c;
                 assign np = q_w;
-                wire unused_impulse = &{1'b0, impulse, in_touch, left_c, pushed_w};
+                wire unused_mouse = &{1'b0, left_c, pushed_w};
             end
-        end else begin : g_no_mouse
-            assign touch_c = 1'b1;
-            assign pushed = q_c;
-            assign np = q_w;
-            wire unused_mouse = &{1'b0, impulse, touch_lo, touch_hi, in_touch, left_c, pushed_w};
-        end
-    endgenerate
 
-    // ---- the ground pass: collision with friction (the test in stage A, the rest in B) ----
-    generate
-        if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
-            assign hit_a = GROUND_ABOVE ? $signed(q_a) < $signed(ground) : $signed(ground) < $signed(q_a);
-            fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v_b), .y(gp), .sat());
-            assign g = ground;
-            wire unused_friction = &{1'b0, friction, qp_b};
-        end else if (EN_GROUND) begin : g_tangent
-            wire [W-1:0] slip;
-            fx_mul #(.W(W), .F(F)) u_slip (.a(v_b), .b(friction), .y(slip), .sat(), .prod());
-            fx_add #(.W(W), .SUB(0)) u_fp (.sub(1'b0), .a(qp_b), .b(slip), .y(gp), .sat());
-            assign g     = q_b;
-            assign hit_a = 1'b0;
-            wire unused_ground = &{1'b0, ground};
-        end else begin : g_no_ground
-            assign g     = q_b;
-            assign gp    = qp_b;
-            assign hit_a = 1'b0;
-            wire unused_ground = &{1'b0, ground, friction, ground_w, g_w, gp_w, hit_w};
+            // the ground pass: collision with friction (the test in stage A, the rest in B)
+            if (EN_GROUND && AXIS == GROUND_AXIS) begin : g_normal
+                assign hit_a = GROUND_ABOVE ? $signed(q_a) < $signed(ground) : $signed(ground) < $signed(q_a);
+                fx_add #(.W(W), .SUB(0)) u_bounce (.sub(1'b0), .a(ground), .b(v_b), .y(gp), .sat());
+                assign g = ground;
+                wire unused_friction = &{1'b0, qp_b};
+            end else if (EN_GROUND) begin : g_tangent
+                wire [W-1:0] slip;
+                fx_mul #(.W(W), .F(F)) u_slip (.a(v_b), .b(friction), .y(slip), .sat(), .prod());
+                fx_add #(.W(W), .SUB(0)) u_fp (.sub(1'b0), .a(qp_b), .b(slip), .y(gp), .sat());
+                assign g     = q_b;
+                assign hit_a = 1'b0;
+            end else begin : g_no_ground
+                assign g     = q_b;
+                assign gp    = qp_b;
+                assign hit_a = 1'b0;
+                wire unused_ground = &{1'b0, g_w, gp_w, hit_w};
+            end
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
+
+    // the inputs a build without their effect leaves unread
+    generate
+        if (!EN_DAMPING) begin : g_unused_damping
+            wire unused_damping = &{1'b0, damping};
+        end
+        if (!EN_GRAVITY) begin : g_unused_gravity
+            wire unused_gravity = &{1'b0, gdt2};
+        end
+        if (!(EN_MOUSE && !GRAB)) begin : g_unused_mouse
+            wire unused_mouse = &{1'b0, impulse, touch_lo, touch_hi, in_touch};
+        end else if (AXIS != 0) begin : g_unused_impulse
+            wire unused_impulse = &{1'b0, impulse, in_touch};
+        end
+        if (!EN_GROUND) begin : g_unused_ground
+            wire unused_ground = &{1'b0, ground, friction, ground_w};
+        end else if (AXIS == GROUND_AXIS) begin : g_unused_friction
+            wire unused_friction = &{1'b0, friction};
+        end else begin : g_unused_boundary
+            wire unused_boundary = &{1'b0, ground};
+        end
+        if (!ARCH) begin : g_unused_stage_r
+            wire unused_stage_r = &{1'b0, stage_r};
+        end
+    endgenerate
 
 endmodule
 

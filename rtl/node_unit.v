@@ -9,8 +9,9 @@
  * Holds, per node, a position and a previous position on each of DIM axes (one
  * node_lane per axis, its storage a reset-free strand_ram), a pinned flag and a
  * written flag (flip-flops, reset). A Verlet pass (verlet_start) updates node
- * 0 .. K-1, one node per clock, each with model/engine_body.h verlet_node() and
- * then mouse_node() (node_lane has the arithmetic):
+ * 0 .. K-1, one node per clock (with PAIR two: row r, nodes 2r and 2r + 1, one from
+ * each bank, through two copies of the step), each with model/engine_body.h
+ * verlet_node() and then mouse_node() (node_lane has the arithmetic):
  *     v = x - px;  v = v - v*d (EN_DAMPING);  px = x;  x = x + v;  x = x + g h^2 (EN_GRAVITY)
  *     x = x + acc (EN_SPRINGS: the spring force of this substep, then acc = 0)
  *     mouse (EN_MOUSE, button down, |mouse - x| < box on every axis):
@@ -31,7 +32,8 @@
  * The node memories are filled by the init walk or NODE loads (w_at_rest), never by
  * reset: after reset a step before they are filled computes on undefined values.
  *
- * Timing (the cycle model mirrors it): verlet_start seen at edge 0 clears
+ * Timing (the cycle model mirrors it; with PAIR read "row" for "node" and K_ROWS =
+ * ceil(K / 2) for K): verlet_start seen at edge 0 clears
  * verlet_done and presents address 0; node i's data arrive in cycle i + 1 (stage A:
  * the velocity), stage B (the rest of the Verlet step) is cycle i + 2, stage C (the
  * mouse's tests) cycle i + 3, and it is written at edge i + 4 (stage W: the impulse
@@ -114,26 +116,33 @@ module node_unit #(
     output wire [(1+PAIR)*DIM*W-1:0] wb_pos
 );
 
-    localparam integer  K_LAST_I = K - 1;
     localparam [IW:0]   K_COUNT  = K[IW:0];           // node count, one bit wider than an index
-    localparam [IW-1:0] K_LAST   = K_LAST_I[IW-1:0];  // index of the last node
+    // the steps of a pass: nodes, or with PAIR rows of two (the last one's odd node past K when K is odd)
+    localparam integer  STEPS_I  = PAIR != 0 ? (K + 1) / 2 : K;
+    localparam integer  S_LAST_I = STEPS_I - 1;
+    localparam [IW-1:0] S_LAST   = S_LAST_I[IW-1:0];  // the last step
 
-    // ---- the pass FSM: stage A (running, vidx: the node whose data arrive), stages B
-    // and C, and stage W (pass_w, idx_w: the node written) ----
+    // ---- the pass FSM: stage A (running, vidx: the node, with PAIR the row, whose data
+    // arrive), stages B and C, and stage W (pass_w, idx_w: the node or row written). Per
+    // way (PAIR: way 1 the row's odd node): pinned, grabbed, and (way 1) whether it exists ----
     reg          running_q, running_d;  // a pass is under way: a node is in stage A
     reg          done_q, done_d;        // FV
-    reg [IW-1:0] vidx_q, vidx_d;        // node whose data port A returns this cycle
+    reg [IW-1:0] vidx_q, vidx_d;        // node (row) whose data port A (the pair read) returns this cycle
     reg          ground_q, ground_d;    // the pass under way is the ground pass
-    wire         stage_a, ground_a, pin_a, grab_a;   // stage A: a node of the pass (below)
+    wire         stage_a, ground_a;     // stage A: a node of the pass (below)
+    wire [PAIR:0] pin_a, grab_a, has_a;
     wire [IW-1:0] idx_a;
-    reg          stage_b, ground_b, pin_b, grab_b;   // stage B: a node of the pass, and how to write it
+    reg          stage_b, ground_b;     // stage B: a node of the pass, and how to write it
+    reg [PAIR:0] pin_b, grab_b, has_b;
     reg [IW-1:0] idx_b;
-    reg          stage_c, ground_c, pin_c, grab_c;   // stage C
+    reg          stage_c, ground_c;     // stage C
+    reg [PAIR:0] pin_c, grab_c, has_c;
     reg [IW-1:0] idx_c;
-    reg          pass_w, ground_w, pin_w, grab_w;    // stage W: the write
+    reg          pass_w, ground_w;      // stage W: the write
+    reg [PAIR:0] pin_w, grab_w, has_w;
     reg [IW-1:0] idx_w;
 
-    wire last = vidx_q == K_LAST;
+    wire last = vidx_q == S_LAST;
     wire pass_start = verlet_start || (EN_GROUND && ground_start);
 
     always @* begin
@@ -151,7 +160,7 @@ module node_unit #(
                 vidx_d = vidx_q + 1'b1;
                 if (last) running_d = 1'b0;
             end
-            if (pass_w && idx_w == K_LAST) done_d = 1'b1;  // the last node is written
+            if (pass_w && idx_w == S_LAST) done_d = 1'b1;  // the last node (row) is written
         end
     end
 
@@ -178,18 +187,21 @@ module node_unit #(
             ground_b <= ground_a;
             pin_b    <= pin_a;
             grab_b   <= grab_a;
+            has_b    <= has_a;
         end
         if (stage_b) begin
             idx_c    <= idx_b;
             ground_c <= ground_b;
             pin_c    <= pin_b;
             grab_c   <= grab_b;
+            has_c    <= has_b;
         end
         if (stage_c) begin
             idx_w    <= idx_c;
             ground_w <= ground_c;
             pin_w    <= pin_c;
             grab_w   <= grab_c;
+            has_w    <= has_c;
         end
     end
 
@@ -200,7 +212,8 @@ module node_unit #(
     // velocity's subtract set the pipelined builds' clock) ----
     generate
         if (ARCH) begin : g_stage_r
-            reg          stage_r_q, ground_r_q, pin_r_q, grab_r_q;
+            reg          stage_r_q, ground_r_q;
+            reg [PAIR:0] pin_r_q, grab_r_q, has_r_q;
             reg [IW-1:0] idx_r_q;
             always @(posedge clk) begin
                 if (reset) stage_r_q <= 1'b0;
@@ -208,8 +221,9 @@ module node_unit #(
                 if (running_q) begin
                     idx_r_q    <= vidx_q;
                     ground_r_q <= ground_q;
-                    pin_r_q    <= q_pin;
-                    grab_r_q   <= q_grab;
+                    pin_r_q    <= v_pin;
+                    grab_r_q   <= v_grab;
+                    has_r_q    <= v_has;
                 end
             end
             assign stage_a  = stage_r_q;
@@ -217,19 +231,27 @@ module node_unit #(
             assign ground_a = ground_r_q;
             assign pin_a    = pin_r_q;
             assign grab_a   = grab_r_q;
+            assign has_a    = has_r_q;
         end else begin : g_no_stage_r
             assign stage_a  = running_q;
             assign idx_a    = vidx_q;
             assign ground_a = ground_q;
-            assign pin_a    = q_pin;
-            assign grab_a   = q_grab;
+            assign pin_a    = v_pin;
+            assign grab_a   = v_grab;
+            assign has_a    = v_has;
         end
     endgenerate
 
     // ---- port A: during a pass the address runs ahead of vidx by one (node vidx+1 is
-    // read while node vidx is written) ----
-    wire [IW-1:0] a_addr = pass_start ? {IW{1'b0}} : running_q ? vidx_q + 1'b1 : a_idx;
-    wire          a_re   = {1'b0, a_addr} < K_COUNT;
+    // read while node vidx is written); with PAIR the pass reads rows through the pair
+    // read, and port A reads the row's even node (for its flags) ----
+    wire          pass_rd = pass_start || running_q;         // the pass reads its next node (row)
+    wire [IW-1:0] v_step  = pass_start ? {IW{1'b0}} : vidx_q + 1'b1;
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [IW:0]   v_even  = {v_step, 1'b0};                  // PAIR: the row's nodes (the top bit is past K)
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [IW-1:0] a_addr  = pass_rd ? (PAIR != 0 ? v_even[IW-1:0] : v_step) : a_idx;
+    wire          a_re    = {1'b0, a_addr} < K_COUNT;
     wire [K-1:0]  pinned_q;       // the flags (below)
     reg           q_pin, q_grab;
     always @(posedge clk)
@@ -238,6 +260,38 @@ module node_unit #(
             q_grab <= GRAB && grab_here && a_addr == grab_idx;
         end
     assign a_pinned = q_pin || q_grab;
+    // the pass's words arrive with these flags (per way); the pair read is the pass's with PAIR
+    wire [PAIR:0] v_pin, v_grab, v_has;
+    wire          pair_re_i;
+    wire [IW-1:0] pair_row_e_i, pair_row_o_i;
+    generate
+        if (PAIR != 0) begin : g_pass_pair
+            // way 1: the row's odd node, its flags read like port A's (and whether it exists)
+            /* verilator lint_off UNUSEDSIGNAL */
+            wire [IW:0] v_odd = {v_step, 1'b1};
+            /* verilator lint_on UNUSEDSIGNAL */
+            reg q_pin1, q_grab1, q_has1;
+            always @(posedge clk)
+                if (pass_rd) begin
+                    q_has1  <= v_odd < K_COUNT;
+                    q_pin1  <= v_odd < K_COUNT && pinned_q[v_odd[IW-1:0]];
+                    q_grab1 <= GRAB && grab_here && v_odd[IW-1:0] == grab_idx;
+                end
+            assign v_pin  = {q_pin1, q_pin};
+            assign v_grab = {q_grab1, q_grab};
+            assign v_has  = {q_has1, 1'b1};
+            assign pair_re_i    = pair_re || pass_rd;
+            assign pair_row_e_i = pass_rd ? v_step : pair_row_e;
+            assign pair_row_o_i = pass_rd ? v_step : pair_row_o;
+        end else begin : g_pass_one
+            assign v_pin  = q_pin;
+            assign v_grab = q_grab;
+            assign v_has  = 1'b1;
+            assign pair_re_i    = pair_re;
+            assign pair_row_e_i = pair_row_e;
+            assign pair_row_o_i = pair_row_o;
+        end
+    endgenerate
 
     // ---- PAIR: the pair read's pinned (or held) flags, one per bank ----
     generate
@@ -264,18 +318,39 @@ module node_unit #(
     // ---- writes: the pass's stage W, else port A's writer ----
     // The grabbed node (GRAB): the Verlet pass puts it on the pointer, px = its old x;
     // the ground pass leaves it alone.
-    wire [DIM-1:0] touch, hit;
-    wire           in_touch = mouse_down && &touch;
-    wire           g_hit    = |hit;    // only the normal axis's lane can hit
-    wire           pass_we  = pass_w && !pin_w && (!ground_w || (g_hit && !grab_w));
-    wire [IW-1:0]  widx     = pass_w ? idx_w : w_idx;
+    // per lane and way: touch[k (1 + PAIR) + way], hit likewise
+    wire [DIM*(1+PAIR)-1:0] touch, hit;
+    wire [PAIR:0]  in_touch, g_hit;
+    genvar wy;
+    generate
+        for (wy = 0; wy <= PAIR; wy = wy + 1) begin : g_way_flags
+            wire [DIM-1:0] touch_way, hit_way;
+            genvar ax;
+            for (ax = 0; ax < DIM; ax = ax + 1) begin : g_ax
+                assign touch_way[ax] = touch[ax*(1+PAIR) + wy];
+                assign hit_way[ax]   = hit[ax*(1+PAIR) + wy];
+            end
+            assign in_touch[wy] = mouse_down && &touch_way;
+            assign g_hit[wy]    = |hit_way;    // only the normal axis's lane can hit
+        end
+    endgenerate
+    wire           pass_we  = pass_w && !pin_w[0] && (!ground_w || (g_hit[0] && !grab_w[0]));
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [IW:0]    w_row    = {idx_w, 1'b0};  // PAIR: the written row's even and odd node (the top bit is past K)
+    wire [IW:0]    w_row1   = {idx_w, 1'b1};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [IW-1:0]  widx     = pass_w ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
     wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
     wire           wprev    = pass_w || w_at_rest;
     wire           w_pin    = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
-    // the force: the Verlet pass consumes node idx_w's, the init walk and loads clear node w_idx's
+    // the force: the Verlet pass consumes node idx_w's (each way's), the init walk and loads clear node w_idx's
     wire           acc_clear = (pass_w && !ground_w) || (w_en && w_at_rest);
-    wire           we2       = PAIR != 0 && w2_en && {1'b0, w2_idx} < K_COUNT;
-    wire [DIM*W-1:0] wdata;
+    // the second write port (PAIR): the pass's way 1, else the constraint pass's second write
+    wire           pass_we2  = PAIR != 0 && pass_w && has_w[PAIR] && !pin_w[PAIR] && (!ground_w || (g_hit[PAIR] && !grab_w[PAIR]));
+    wire [IW-1:0]  widx2     = pass_w ? w_row1[IW-1:0] : w2_idx;
+    wire           we2       = PAIR != 0 && (pass_w ? pass_we2 : w2_en) && {1'b0, widx2} < K_COUNT;
+    wire           acc_clear2 = PAIR != 0 && pass_w && !ground_w && has_w[PAIR];
+    wire [DIM*W-1:0] wdata, wdata2;
     wire [DIM*W-1:0] b_pos_raw;  // port B before the written flags
 
     genvar k;
@@ -289,8 +364,8 @@ module node_unit #(
                 .we(we), .wprev(wprev), .widx(widx),
                 .acc_clear(acc_clear && {1'b0, widx} < K_COUNT), .acc_clear_idx(widx),
                 .acc_we(acc_we && {1'b0, w_idx} < K_COUNT), .acc_w(acc_w[k*W +: W]),
-                .pair_re(pair_re), .pair_row_e(pair_row_e), .pair_row_o(pair_row_o),
-                .we2(we2), .widx2(w2_idx), .wdata2(w2_pos[k*W +: W]),
+                .pair_re(pair_re_i), .pair_row_e(pair_row_e_i), .pair_row_o(pair_row_o_i),
+                .we2(we2), .wprev2(pass_w), .acc_clear2(acc_clear2), .widx2(widx2), .w2_pos(w2_pos[k*W +: W]),
                 .stage_r(running_q), .stage_a(stage_a), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
                 .grab_w(grab_w),
                 .w_pin(w_pin),
@@ -301,7 +376,8 @@ module node_unit #(
                 .q(a_pos[k*W +: W]), .qp(a_prev[k*W +: W]), .qa(a_acc[k*W +: W]), .b_data(b_pos_raw[k*W +: W]),
                 .q_e(pair_pos_e[k*W +: W]), .q_o(pair_pos_o[k*W +: W]),
                 .qp_e(pair_prev_e[k*W +: W]), .qp_o(pair_prev_o[k*W +: W]),
-                .touch(touch[k]), .hit(hit[k]), .wdata(wdata[k*W +: W]));
+                .touch(touch[k*(1+PAIR) +: 1+PAIR]), .hit(hit[k*(1+PAIR) +: 1+PAIR]),
+                .wdata(wdata[k*W +: W]), .wdata2(wdata2[k*W +: W]));
         end
     endgenerate
 
@@ -324,7 +400,7 @@ module node_unit #(
                 end else begin
                     if (pin_en)    pinned_n  <= pinned_n  | (pin_idx == N_ID);
                     if (we || we2)
-                        written_n <= written_n | (PAIR != 0 ? (we && widx == N_ID) || (we2 && w2_idx == N_ID) : widx == N_ID);
+                        written_n <= written_n | (PAIR != 0 ? (we && widx == N_ID) || (we2 && widx2 == N_ID) : widx == N_ID);
                 end
             assign pinned_q[n]  = pinned_n;
             assign written_q[n] = written_n;
@@ -362,8 +438,8 @@ module node_unit #(
                 end else begin
                     wb2_valid_q <= we2;
                     if (we2) begin
-                        wb2_idx_q <= w2_idx;
-                        wb2_pos_q <= w2_pos;
+                        wb2_idx_q <= widx2;
+                        wb2_pos_q <= wdata2;
                     end
                 end
             end
@@ -374,6 +450,9 @@ module node_unit #(
             assign wb_valid[PAIR] = 1'b0;
             assign wb_idx[PAIR*IW +: IW] = {IW{1'b0}};
             assign wb_pos[PAIR*DIM*W +: DIM*W] = {(DIM*W){1'b0}};
+            wire unused_wdata2 = &{1'b0, wdata2};
+        end else begin : g_one_port
+            wire unused_wdata2 = &{1'b0, wdata2};  // one write port: the lanes' second is 0
         end
         if (DEBUG) begin : g_wb
             reg             wb_valid_q;

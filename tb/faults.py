@@ -21,18 +21,18 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 FAULTS = {
     # bit 0 of x flipped in the fifth pass write of unit 0 after reset: storage and the write-back lane
     "flip": [
-        ("node_unit.v", r"^    wire \[DIM\*W-1:0\] wdata;\n",
-         "    wire [DIM*W-1:0] wdata;\n"
+        ("node_unit.v", r"^    wire \[DIM\*W-1:0\] wdata, wdata2;\n",
+         "    wire [DIM*W-1:0] wdata, wdata2;\n"
          "    reg [2:0] fault_writes;  // planted fault: pass writes since reset\n"
          "    always @(posedge clk)\n"
          "        if (reset) fault_writes <= 3'd0;\n"
          "        else if (pass_we && fault_writes != 3'd7) fault_writes <= fault_writes + 1'b1;\n"
          "    wire fault_flip = UNIT_ID == 0 && pass_we && fault_writes == 3'd4;\n"),
-        ("node_unit.v", r"\.wdata\(wdata\[k\*W \+: W\]\)\);",
-         ".wdata(wdata[k*W +: W]), .fault_flip(k == 0 && fault_flip));"),
-        ("node_lane.v", r"^    output wire \[W-1:0\]  wdata( +)// (.*)\n",
+        ("node_unit.v", r"\.wdata\(wdata\[k\*W \+: W\]\),",
+         ".wdata(wdata[k*W +: W]), .fault_flip(k == 0 && fault_flip),"),
+        ("node_lane.v", r"^    output wire \[W-1:0\]  wdata,( +)// (.*)\n",
          "    output wire [W-1:0]  wdata,\\1// \\2\n"
-         "    input  wire          fault_flip  // planted fault: flip bit 0 of this write\n"),
+         "    input  wire          fault_flip, // planted fault: flip bit 0 of this write\n"),
         ("node_lane.v", r"^    assign wdata( +)= (.*);\n",
          "    assign wdata\\1= (\\2) ^ {{(W-1){1'b0}}, fault_flip};\n"),
     ],
@@ -97,14 +97,23 @@ FAULTS["graph_boundary"] = [
 # come, which one cycle after their arrival are the next node's, so the pass steps every node
 # from its successor's position and velocity
 FAULTS["stage_r"] = [
-    ("node_lane.v", r"^            assign q_a  = q_r;\n            assign qp_a = qp_r;\n            assign qa_a = qa_r;\n",
-     "            assign q_a  = q;   // planted fault: stage R bypassed\n            assign qp_a = qp;\n            assign qa_a = qa;\n"
-     "            wire unused_fault = &{1'b0, q_r, qp_r, qa_r};\n"),
+    ("node_lane.v", r"^                assign q_a  = q_r;\n                assign qp_a = qp_r;\n                assign qa_a = qa_r;\n",
+     "                assign q_a  = q_in;   // planted fault: stage R bypassed\n                assign qp_a = qp_in;\n"
+     "                assign qa_a = qa_in;\n                wire unused_fault = &{1'b0, q_r, qp_r, qa_r};\n"),
+]
+
+# node_unit with PAIR (a pipelined chain's Verlet pass, a row of two nodes a clock): the odd
+# node of a row takes the even node's pinned flag, so node 1 of a chain pinned at node 0 stays
+# where it is
+FAULTS["odd_pin"] = [
+    ("node_unit.v", r"^            assign v_pin  = \{q_pin1, q_pin\};\n",
+     "            assign v_pin  = {q_pin, q_pin};  // planted fault: the odd node takes the even one's pin\n"
+     "            wire unused_fault = &{1'b0, q_pin1};\n"),
 ]
 
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
 ORDER = {"boundary": "redblack", "slots_cut": "redblack", "bypass": "redblack", "hazard": "redblack",
-         "graph_hazard": "redblack", "graph_boundary": "redblack", "stage_r": "redblack"}
+         "graph_hazard": "redblack", "graph_boundary": "redblack", "stage_r": "redblack", "odd_pin": "redblack"}
 # The scene a fault runs on, where it is not the default chain (tb/scenes/chain_q10_8.scene).
 SCENE = {"graph_hazard": "tb/scenes/graph3d_q12.scene", "graph_boundary": "tb/scenes/graph3d_q12.scene",
          "slots_cut": "tb/scenes/chain_slot_bound.scene"}

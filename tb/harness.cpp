@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -298,6 +298,16 @@ bool Run::cycle(const cyc_inputs &in) {
         for (int l = 0; l < hp_.wb; l++)
             if (m.wb_valid[l]) r_.predicted_fault = cyc_;
     }
+    // odd_pin: a row's odd node takes its even node's pinned flag, so the first Verlet write
+    // (the second write port's lane) of a free odd node beside a pinned even one is missing
+    if (o_.expect == "odd_pin" && r_.predicted_fault < 0 && last_edge_verlet_ && hp_.pair) {
+        cyc_outputs m;
+        cyc_get_outputs(&model_, &m);
+        for (int u = 0; u < hp_.m; u++) {
+            const int l = 2 * u + 1, node = u * hp_.k + (int)m.wb_idx[l];
+            if (m.wb_valid[l] && model_.sc.pinned[node - 1] && !model_.sc.pinned[node]) r_.predicted_fault = cyc_;
+        }
+    }
     if (o_.expect == "delay" && r_.predicted_fault < 0) {
         cyc_outputs m;
         cyc_get_outputs(&model_, &m);
@@ -501,7 +511,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -546,8 +556,8 @@ int main(int argc, char **argv) {
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
         o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary" &&
-        o.expect != "stage_r")
-        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary or stage_r");
+        o.expect != "stage_r" && o.expect != "odd_pin")
+        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary, stage_r or odd_pin");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
     if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 
