@@ -15,7 +15,11 @@
  *   write port 1 (we, waddr, wdata): any node.
  *   write port 2 (we2, waddr2, wdata2; BANKS = 2): a node of the other bank than
  *                port 1's write in the same cycle (the caller guarantees it: two
- *                writes to one bank in one cycle are not supported).
+ *                writes to one bank in one cycle are not supported, and a simulation
+ *                check stops on one). A bank's address and data follow port 2 when
+ *                port 2 writes it, else port 1: port 2's enable comes from registered
+ *                pass flags, port 1's through the writer select (init walk, loads, the
+ *                sequencer), so choosing by port 2 keeps that select off the data path.
  *   read port A (re_a, raddr_a): one node, its word on rdata_a; with BANKS = 2 both
  *                banks read the row raddr_a / 2 and rdata_a is the one of bank
  *                raddr_a mod 2 (a registered select after the two outputs).
@@ -40,6 +44,7 @@ module bank_ram #(
     parameter integer BANKS     = 1   // 1: one memory; 2: even and odd banks
 ) (
     input  wire             clk,
+    input  wire             reset,    // only for the simulation check below (the memory is not reset)
     input  wire             we,
     input  wire [ABITS-1:0] waddr,
     input  wire [WIDTH-1:0] wdata,
@@ -69,7 +74,7 @@ module bank_ram #(
                 .re_b(re_b), .raddr_b(raddr_b), .rdata_b(rdata_b));
             assign rdata_e = rdata_a;
             assign rdata_o = {WIDTH{1'b0}};
-            wire unused_pair = &{1'b0, we2, waddr2, wdata2, pair_re, prow_e, prow_o};
+            wire unused_pair = &{1'b0, reset, we2, waddr2, wdata2, pair_re, prow_e, prow_o};
         end else begin : g_two
             // a bank's rows: ceil(DEPTH / 2), addressed by the node address without its bit 0
             localparam integer BDEPTH = (DEPTH + 1) / 2;
@@ -88,9 +93,18 @@ module bank_ram #(
                 wire          w2   = we2 && waddr2[0] == B; // port 2 writes this bank
                 wire [RW-1:0] prow = b == 0 ? pe_row[RW-1:0] : po_row[RW-1:0];
                 strand_ram #(.WIDTH(WIDTH), .DEPTH(BDEPTH), .ABITS(RW), .BLOCK_MIN(BLOCK_MIN), .READ_B(READ_B)) u_ram (
-                    .clk(clk), .we(w1 || w2), .waddr(w1 ? w1_row[RW-1:0] : w2_row[RW-1:0]), .wdata(w1 ? wdata : wdata2),
+                    .clk(clk), .we(w1 || w2), .waddr(w2 ? w2_row[RW-1:0] : w1_row[RW-1:0]), .wdata(w2 ? wdata2 : wdata),
                     .re_a(re_a || pair_re), .raddr_a(pair_re ? prow : a_row[RW-1:0]), .rdata_a(q_a[b]),
                     .re_b(re_b), .raddr_b(b_row[RW-1:0]), .rdata_b(q_b[b]));
+`ifndef SYNTHESIS
+                // not under reset: the enables come from registers that reset clears, and
+                // before its first edge they hold whatever the simulator started them with
+                always @(posedge clk)
+                    if (!reset && w1 && w2) begin
+                        $display("bank_ram: both write ports write bank %0d in one cycle in %m", b);
+                        $fatal(1);
+                    end
+`endif
             end
             // which bank port A and port B read (held with their outputs)
             reg sel_a, sel_b;

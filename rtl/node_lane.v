@@ -54,6 +54,7 @@ module node_lane #(
     parameter integer AXIS = 0   // 0 x, 1 y, 2 z
 ) (
     input  wire          clk,
+    input  wire          reset,      // only for the node memories' simulation check (nothing here is reset)
 
     // port A, port B, the write port (node_unit's addresses and enables)
     input  wire          a_re,
@@ -138,14 +139,14 @@ module node_lane #(
     // positions and previous positions: two banks with PAIR (the second write port and the
     // pair read are the pipelined passes')
     bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR)) u_pos (
-        .clk(clk), .we(we), .waddr(widx), .wdata(wdata), .we2(PAIR != 0 && we2), .waddr2(widx2), .wdata2(wdata2),
+        .clk(clk), .reset(reset), .we(we), .waddr(widx), .wdata(wdata), .we2(PAIR != 0 && we2), .waddr2(widx2), .wdata2(wdata2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(q),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(q_e), .rdata_o(q_o),
         .re_b(1'b1), .raddr_b(b_addr), .rdata_b(b_data));
     /* verilator lint_off PINCONNECTEMPTY */
     // the previous positions and the forces have one reader (port A, or the pair read)
     bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_prev (
-        .clk(clk), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
+        .clk(clk), .reset(reset), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
         .we2(PAIR != 0 && we2 && wprev2), .waddr2(widx2), .wdata2(wprev_data2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qp_e), .rdata_o(qp_o),
@@ -158,7 +159,7 @@ module node_lane #(
     generate
         if (EN_SPRINGS) begin : g_acc
             bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_acc (
-                .clk(clk), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
+                .clk(clk), .reset(reset), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
                 .wdata(acc_clear ? {W{1'b0}} : acc_w),
                 .we2(PAIR != 0 && acc_clear2), .waddr2(widx2), .wdata2({W{1'b0}}),
                 .re_a(a_re), .raddr_a(a_addr), .rdata_a(qa),

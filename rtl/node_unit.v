@@ -86,6 +86,8 @@ module node_unit #(
     input  wire [DIM*W-1:0] w_pos,
     input  wire             w_at_rest,    // also the previous position (and clear the force): init and loads
     input  wire [DIM*W-1:0] w_prev,       //   to this, or to w_pos for a pinned node
+    input  wire [IW-1:0]    rest_idx,     // = w_idx whenever w_at_rest: the pinned flag is looked up from it,
+                                          //   not through w_idx's select among the four writers
     input  wire             pin_en,       // pin node pin_idx
     input  wire [IW-1:0]    pin_idx,
 
@@ -342,7 +344,8 @@ module node_unit #(
     wire [IW-1:0]  widx     = pass_w ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
     wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
     wire           wprev    = pass_w || w_at_rest;
-    wire           w_pin    = {1'b0, w_idx} < K_COUNT && pinned_q[w_idx];  // a pinned node starts at rest
+    // a pinned node starts at rest (read only when w_at_rest, when rest_idx is w_idx)
+    wire           w_pin    = {1'b0, rest_idx} < K_COUNT && pinned_q[rest_idx];
     // the force: the Verlet pass consumes node idx_w's (each way's), the init walk and loads clear node w_idx's
     wire           acc_clear = (pass_w && !ground_w) || (w_en && w_at_rest);
     // the second write port (PAIR): the pass's way 1, else the constraint pass's second write
@@ -359,7 +362,7 @@ module node_unit #(
             node_lane #(
 `include "strand_params_pass.vh"
                 , .AXIS(k)) u_lane (
-                .clk(clk),
+                .clk(clk), .reset(reset),
                 .a_re(a_re), .a_addr(a_addr), .b_addr(b_idx),
                 .we(we), .wprev(wprev), .widx(widx),
                 .acc_clear(acc_clear && {1'b0, widx} < K_COUNT), .acc_clear_idx(widx),

@@ -353,6 +353,7 @@ module strand_core #(
                 .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? acc_idx_all[u*IW +: IW] : seq_widx[u*IW +: IW]),
                 .w_pos(here_init ? init_pos : here_load ? load_pos : seq_wpos[u*DW +: DW]),
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
+                .rest_idx(init_we ? init_addr[IW-1:0] : cfg_node[IW-1:0]),
                 .pin_en(pin_we && cfg_node[AW-1:IW] == U_ID), .pin_idx(cfg_node[IW-1:0]),
                 .b_idx(rd_addr[IW-1:0]), .b_pos(b_pos_all[u*DW +: DW]),
                 .pair_re(pair_re), .pair_row_e(pair_row_e_all[u*IW +: IW]), .pair_row_o(pair_row_o_all[u*IW +: IW]),
