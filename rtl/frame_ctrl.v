@@ -65,6 +65,7 @@ module frame_ctrl #(
 
     output wire             init_we,       // the init walk writes node init_addr now
     output wire [AW-1:0]    init_addr,
+    output wire [AW-1:0]    init_addr_next, // init_addr after this edge (not reset: reset makes it 0)
     output wire [DIM*W-1:0] init_pos,
     output wire [DIM*W-1:0] init_prev
 );
@@ -110,17 +111,20 @@ module frame_ctrl #(
                 fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_q[k*W +: W]), .b(prev_off[k*W +: W]), .y(init_prev[k*W +: W]), .sat());
                 /* verilator lint_on PINCONNECTEMPTY */
             end
+            // the next address, also out: node_unit looks up the next node's pinned flag a
+            // cycle ahead, so that the lookup is not on the memory's write path
+            assign init_addr_next = phase == PH_IDLE && walk ? {AW{1'b0}} : phase == PH_INIT ? next_node(addr_q) : addr_q;
             always @(posedge clk) begin
                 if (reset) begin
                     addr_q  <= {AW{1'b0}};
                     count_q <= {CW{1'b0}};
                     pos_q   <= {(DIM*W){1'b0}};
                 end else if (phase == PH_IDLE && walk) begin
-                    addr_q  <= {AW{1'b0}};
+                    addr_q  <= init_addr_next;
                     count_q <= {CW{1'b0}};
                     pos_q   <= start_pos;
                 end else if (phase == PH_INIT) begin
-                    addr_q  <= next_node(addr_q);
+                    addr_q  <= init_addr_next;
                     count_q <= count_q + 1'b1;
                     pos_q   <= pos_next;
                 end
@@ -131,6 +135,7 @@ module frame_ctrl #(
         end else begin : g_no_walk
             assign walk_end  = 1'b0;
             assign init_addr = {AW{1'b0}};
+            assign init_addr_next = {AW{1'b0}};
             assign init_pos  = {(DIM*W){1'b0}};
             assign init_prev = {(DIM*W){1'b0}};
             wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};

@@ -86,8 +86,8 @@ module node_unit #(
     input  wire [DIM*W-1:0] w_pos,
     input  wire             w_at_rest,    // also the previous position (and clear the force): init and loads
     input  wire [DIM*W-1:0] w_prev,       //   to this, or to w_pos for a pinned node
-    input  wire [IW-1:0]    rest_idx,     // = w_idx whenever w_at_rest: the pinned flag is looked up from it,
-                                          //   not through w_idx's select among the four writers
+    input  wire [IW-1:0]    rest_idx,     // the node an at-rest write's pinned flag is looked up for: a
+                                          //   graph's NODE load's (now); a chain's init walk's next node
     input  wire             pin_en,       // pin node pin_idx
     input  wire [IW-1:0]    pin_idx,
 
@@ -344,8 +344,23 @@ module node_unit #(
     wire [IW-1:0]  widx     = pass_w ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
     wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
     wire           wprev    = pass_w || w_at_rest;
-    // a pinned node starts at rest (read only when w_at_rest, when rest_idx is w_idx)
-    wire           w_pin    = {1'b0, rest_idx} < K_COUNT && pinned_q[rest_idx];
+    // A pinned node starts at rest (w_pin is read only when w_at_rest). The lookup, a K-way
+    // select over the flags, is kept off the memories' write data: a graph's NODE load
+    // looks up rest_idx (= w_idx then) apart from w_idx's select among the four writers; a
+    // chain's init walk registers the flag of the node it writes next (rest_idx), with a
+    // PIN of that node in the same cycle, which is what pinned_q holds then.
+    wire           w_pin;
+    generate
+        if (GRAPH) begin : g_load_pin
+            assign w_pin = {1'b0, rest_idx} < K_COUNT && pinned_q[rest_idx];
+        end else begin : g_walk_pin
+            reg next_pin_q;
+            always @(posedge clk)
+                if (reset) next_pin_q <= 1'b0;
+                else       next_pin_q <= {1'b0, rest_idx} < K_COUNT && (pinned_q[rest_idx] || (pin_en && pin_idx == rest_idx));
+            assign w_pin = next_pin_q;
+        end
+    endgenerate
     // the force: the Verlet pass consumes node idx_w's (each way's), the init walk and loads clear node w_idx's
     wire           acc_clear = (pass_w && !ground_w) || (w_en && w_at_rest);
     // the second write port (PAIR): the pass's way 1, else the constraint pass's second write

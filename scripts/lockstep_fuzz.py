@@ -519,9 +519,12 @@ def main():
             return 1
         label = f"fuzz seed {s}"
         scene_facts[label] = (params, facts)
-        # every third scene of a build also gets resets at random cycles in the middle of frames
-        jobs.append((label, [path, "--quiet", "--seed", str(s), "--resets", str(2 if slot % 3 == 0 else 0),
-                             "+verilator+rand+reset+2", f"+verilator+seed+{s % 100000 + 1}"], params, "", ""))
+        # every third scene of a build also gets resets at random cycles in the middle of frames,
+        # every second one some of its PINs during the init walk
+        args = [path, "--quiet", "--seed", str(s), "--resets", str(2 if slot % 3 == 0 else 0)]
+        args += ["--late-pins"] if slot % 2 else []
+        args += ["+verilator+rand+reset+2", f"+verilator+seed+{s % 100000 + 1}"]
+        jobs.append((label, args, params, "", ""))
 
     if a.scenes_only:
         print(f"PASS lockstep scenes: {len(seeds)} scenes of seed {a.seed} written to {fuzz}/, each its build's")

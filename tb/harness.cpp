@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -26,7 +26,9 @@
 // --mode rtl runs the RTL alone and --mode model the cycle model alone, on the same
 // stimulus (for make bench). --resets N asserts reset at N random cycles in the
 // middle of frames; the run then writes the setup again and starts the scene over,
-// and the RTL and the model must go on agreeing.
+// and the RTL and the model must go on agreeing. --late-pins writes some of a chain's
+// PINs during the init walk (in the cycle before the walk writes the node, or in that
+// cycle): the at-rest write of a node pinned the cycle before must see the pin.
 //
 // --expect-fault needs a build from a copy of the RTL with that fault planted
 // (tb/faults.py): it passes only if the first mismatch is at the cycle the model
@@ -64,6 +66,7 @@ struct Options {
     std::string order;             // serial | redblack: the scene's constraint order replaced
     bool as_built = false;         // the model follows the compiled build, not the scene's
     int resets = 0;                // resets at random cycles during the frames
+    bool late_pins = false;        // a chain's PIN writes during the init walk (below)
     int frames = -1;
     uint64_t seed = 1;
     bool quiet = false;
@@ -381,7 +384,17 @@ bool Run::setup(cyc_inputs &in) {
         writes.resize((size_t)hw_setup_writes(&sc_, &tmp, writes.data(), (int)writes.size()));
         sim_fx_free(&tmp);
     }
+    std::vector<std::pair<int, long>> late_pins; // node, the walk cycle its PIN is written in
     for (const hw_write &w : writes) {
+        if (o_.late_pins && !hp_.graph && w.addr == STRAND_REG_PIN) {
+            int node = -1;
+            for (int i = 1; i < sc_.n_nodes && node < 0; i++)
+                if (hw_node_addr(&hp_, i) == w.data) node = i;
+            if (node > 0 && rng_.below(2)) {
+                late_pins.emplace_back(node, node - (long)rng_.below(2));
+                continue;
+            }
+        }
         for (uint32_t g = rng_.below(3); g > 0; g--) {
             noise(in);
             in.cfg_we = false;
@@ -394,10 +407,36 @@ bool Run::setup(cyc_inputs &in) {
         if (!cycle(in)) return false;
     }
     in.cfg_we = false;
+    // The init walk writes node j (in node order) in its j-th cycle. --late-pins: a chain's
+    // PIN of node i > 0 is held back and written in the walk's cycle i - 1 or i (drawn), so
+    // that the walk's at-rest write sees a pin made the cycle before it and one made the
+    // same cycle (which it does not see). The scene then starts differently; model and RTL
+    // alike.
+    long walk_cycle = 0;
     do {
         noise(in);
+        in.cfg_we = false;
+        if (phase() == PH_INIT) {
+            for (size_t p = 0; p < late_pins.size(); p++)
+                if (late_pins[p].second == walk_cycle) {
+                    in.cfg_we = true;
+                    in.cfg_addr = STRAND_REG_PIN;
+                    in.cfg_data = hw_node_addr(&hp_, late_pins[p].first);
+                    late_pins.erase(late_pins.begin() + (long)p);
+                    break;
+                }
+            walk_cycle++;
+        }
         if (!cycle(in)) return false;
     } while (phase() != PH_IDLE);
+    in.cfg_we = false;
+    for (const auto &lp : late_pins) { // the ones whose cycle another pin took: after the walk
+        in.cfg_we = true;
+        in.cfg_addr = STRAND_REG_PIN;
+        in.cfg_data = hw_node_addr(&hp_, lp.first);
+        if (!cycle(in)) return false;
+    }
+    in.cfg_we = false;
     return true;
 }
 
@@ -511,7 +550,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -545,6 +584,7 @@ int main(int argc, char **argv) {
         else if (a == "--mode") o.mode = value("--mode");
         else if (a == "--png-dir") o.png_dir = value("--png-dir");
         else if (a == "--resets") o.resets = std::atoi(value("--resets"));
+        else if (a == "--late-pins") o.late_pins = true;
         else if (a == "--as-built") o.as_built = true;
         else if (a == "--order") o.order = value("--order");
         else if (a == "--help") return usage(nullptr), 0;
