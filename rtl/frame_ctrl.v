@@ -101,6 +101,7 @@ module frame_ctrl #(
     generate
         if (!GRAPH) begin : g_walk
             reg [AW-1:0]    addr_q;
+            reg [AW-1:0]    after_q;   // next_node(addr_q), kept a cycle ahead (below)
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
             wire [DIM*W-1:0] pos_next;
@@ -111,20 +112,25 @@ module frame_ctrl #(
                 fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_q[k*W +: W]), .b(prev_off[k*W +: W]), .y(init_prev[k*W +: W]), .sat());
                 /* verilator lint_on PINCONNECTEMPTY */
             end
-            // the next address, also out: node_unit looks up the next node's pinned flag a
-            // cycle ahead, so that the lookup is not on the memory's write path
-            assign init_addr_next = phase == PH_IDLE && walk ? {AW{1'b0}} : phase == PH_INIT ? next_node(addr_q) : addr_q;
+            // The next address, also out: node_unit looks up the next node's pinned flag a
+            // cycle ahead, so that the lookup is not on the memory's write path. after_q holds
+            // the address after addr_q, so that no incrementer sits before that lookup.
+            assign init_addr_next = phase == PH_IDLE && walk ? {AW{1'b0}} : phase == PH_INIT ? after_q : addr_q;
+            localparam [AW-1:0] ADDR_ZERO = {AW{1'b0}};
             always @(posedge clk) begin
                 if (reset) begin
                     addr_q  <= {AW{1'b0}};
+                    after_q <= next_node(ADDR_ZERO);
                     count_q <= {CW{1'b0}};
                     pos_q   <= {(DIM*W){1'b0}};
                 end else if (phase == PH_IDLE && walk) begin
-                    addr_q  <= init_addr_next;
+                    addr_q  <= {AW{1'b0}};
+                    after_q <= next_node(ADDR_ZERO);
                     count_q <= {CW{1'b0}};
                     pos_q   <= start_pos;
                 end else if (phase == PH_INIT) begin
-                    addr_q  <= init_addr_next;
+                    addr_q  <= after_q;
+                    after_q <= next_node(after_q);
                     count_q <= count_q + 1'b1;
                     pos_q   <= pos_next;
                 end
