@@ -378,8 +378,15 @@ module strand_core #(
         rd_u_q  <= rd_addr[AW-1:IW];
         rd_u_q2 <= rd_u_q;
     end
-    wire          rd_ok  = {1'b0, rd_u_q2} < M_COUNT;  // past the last unit: 0, never X
-    wire [DW-1:0] rd_pos = rd_ok ? b_pos_all[rd_u_q2 * DW +: DW] : {DW{1'b0}};
+    // an AND-OR select over the units (past the last unit: 0, never X); an indexed part
+    // select (rd_u_q2 * DW) became a multiplier block on the path to the bus
+    reg [DW-1:0] rd_pos;
+    integer ru;
+    always @(*) begin
+        rd_pos = {DW{1'b0}};
+        for (ru = 0; ru < M; ru = ru + 1)
+            if ({1'b0, rd_u_q2} == ru[UW:0]) rd_pos = rd_pos | b_pos_all[ru*DW +: DW];
+    end
     assign rd_x = rd_pos[0 +: W];
     assign rd_y = rd_pos[W +: W];
     generate
