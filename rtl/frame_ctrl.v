@@ -65,7 +65,7 @@ module frame_ctrl #(
 
     output wire             init_we,       // the init walk writes node init_addr now
     output wire [AW-1:0]    init_addr,
-    output wire [AW-1:0]    init_addr_next, // init_addr after this edge (not reset: reset makes it 0)
+    output wire [AW-1:0]    init_addr_next, // in the walk, init_addr after this edge; else 0 (the walk's first node)
     output wire [DIM*W-1:0] init_pos,
     output wire [DIM*W-1:0] init_prev
 );
@@ -114,8 +114,10 @@ module frame_ctrl #(
             end
             // The next address, also out: node_unit looks up the next node's pinned flag a
             // cycle ahead, so that the lookup is not on the memory's write path. after_q holds
-            // the address after addr_q, so that no incrementer sits before that lookup.
-            assign init_addr_next = phase == PH_IDLE && walk ? {AW{1'b0}} : phase == PH_INIT ? after_q : addr_q;
+            // the address after addr_q, so that no incrementer sits before that lookup. The flag
+            // is used only in the walk, which always starts at node 0 from PH_IDLE: so outside
+            // PH_INIT the next address is 0, and the command decode (walk) stays off this path.
+            assign init_addr_next = phase == PH_INIT ? after_q : {AW{1'b0}};
             localparam [AW-1:0] ADDR_ZERO = {AW{1'b0}};
             always @(posedge clk) begin
                 if (reset) begin
