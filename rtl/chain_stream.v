@@ -137,7 +137,13 @@ module chain_stream #(
     reg [ITW-1:0] iter_q;
     wire          last      = colour && iter_q == ITER_LAST;  // the pass's last sweep
     wire          sweep_end = running && t == (last ? SL_LAST : SP_LAST);
-    wire          slot      = running && t >= 2 && t <= T_NS1;  // slot j = t - 2 is issued
+    // The sweep counter's next value (running, t: the registers below take it). The slot's
+    // flags (issued; first, last) are formed from it a cycle ahead and registered, since they
+    // select every unit's pipe inputs: a compare on t would sit before that wide fan-out.
+    wire          start_now    = start && !running;
+    wire          running_next = reset ? 1'b0 : start_now ? 1'b1 : sweep_end && last ? 1'b0 : running;
+    wire [TW-1:0] t_next       = reset || start_now || sweep_end ? {TW{1'b0}} : running ? t + 1'b1 : t;
+    reg           slot;          // slot j = t - 2 is issued (running, 2 <= t <= NS + 1)
     // pair t - 1 is read (running, 1 <= t <= T_PJ), the pair row jr = t - 1: both registered,
     // formed a cycle ahead from t (below), so that the memories' addresses and the pinned
     // flags' multiplexers start from flip-flops, not from the sweep counter's subtract
@@ -153,6 +159,11 @@ module chain_stream #(
     wire [TW+XW-1:0] t_minus_2_wide = {{XW{1'b0}}, t_minus_2};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [XW-1:0] j  = t_minus_2_wide[XW-1:0];
+    /* verilator lint_off UNUSEDSIGNAL */
+    wire [TW-1:0]    t_next_minus_2      = t_next - T_TWO;
+    wire [TW+XW-1:0] t_next_minus_2_wide = {{XW{1'b0}}, t_next_minus_2};
+    /* verilator lint_on UNUSEDSIGNAL */
+    wire [XW-1:0] j_next = t_next_minus_2_wide[XW-1:0];   // next cycle's j
     // the slots issued: the count restarts at the sweep's first slot, so that it reaches NS
     // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 2), and FEC
     // stays high until the next sweep's first slot
@@ -177,29 +188,24 @@ module chain_stream #(
     end
 
     always @(posedge clk) begin
+        running <= running_next;
+        t       <= t_next;
         if (reset) begin
-            running <= 1'b0;
-            t       <= {TW{1'b0}};
             colour  <= 1'b0;
             iter_q  <= {ITW{1'b0}};
             done    <= 1'b0;
             counter <= {CW{1'b0}};
         end else begin
             done <= sweep_end && last;
-            if (start && !running) begin
-                running <= 1'b1;
-                t       <= {TW{1'b0}};
+            if (start_now) begin
                 colour  <= 1'b0;
                 iter_q  <= {ITW{1'b0}};
                 counter <= {CW{1'b0}};
             end else if (sweep_end) begin
-                t       <= {TW{1'b0}};
                 counter <= counter_next;
-                if (last) running <= 1'b0;
                 colour <= !colour;
                 if (colour) iter_q <= iter_q + 1'b1;
             end else if (running) begin
-                t       <= t + 1'b1;
                 counter <= counter_next;
             end
         end
@@ -210,10 +216,16 @@ module chain_stream #(
     assign nidx = jr;
     assign fec  = counter == SLOTS;
 
-    // where slot j stands at the stream's ends
-    wire at_first    = j == {XW{1'b0}};
-    wire at_last_even = K_EVEN && j == J_HALF;      // position 2j is K: no own node there
-    wire at_last_odd  = !K_EVEN && j == J_LAST_ODD; // position 2j+1 is K
+    // where slot j stands at the stream's ends: registered from next cycle's j (above)
+    reg at_first;       // j = 0
+    reg at_last_even;   // position 2j is K: no own node there
+    reg at_last_odd;    // position 2j+1 is K
+    always @(posedge clk) begin
+        slot         <= running_next && t_next >= T_TWO && t_next <= T_NS1;
+        at_first     <= j_next == {XW{1'b0}};
+        at_last_even <= K_EVEN && j_next == J_HALF;
+        at_last_odd  <= !K_EVEN && j_next == J_LAST_ODD;
+    end
 
     // ---- every unit's arrivals: stream positions 2j (arr0) and 2j+1 (arr1), as bundles ----
     wire [M*NB-1:0] arr0_all, arr1_all;
