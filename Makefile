@@ -369,9 +369,9 @@ formal: bootstrap
 
 # make test: a slice of the tasks (the short ones, every kind) and one planted fault of each
 # class of checker (arithmetic, handshake, miter, sequencer, AXI4-Lite, reset): ~1 min.
-FORMAL_QUICK  := fx_sqrt_w8_b3 fx_div_hs_w8_f4_b1 fx_div_w8_f4_b1 fx_mul_w8_f4 pipes_sqrt_w8_b3 pipes_div_w8_f1_b1 \
+FORMAL_QUICK  := fx_sqrt_w8_b3 fx_div_hs_w8_f4_b1 fx_div_w8_f4_b1 fx_mul_w8_f4 fx_mul_round_w32_f16 pipes_sqrt_w8_b3 pipes_div_w8_f1_b1 \
                  chain_seq_m1_k3_i1 pair_seq_m1_k3_p1 stream_centred_m2_k2 axil_m1_k1_w8 toward_hs_w8_d2
-FORMAL_FAULTS := sqrt_no_round div_restart_busy sqrt_pipe_big chain_seq_short_pass axil_bvalid_dropped frame_irq_not_reset
+FORMAL_FAULTS := sqrt_no_round round_sign_wraps div_restart_busy sqrt_pipe_big chain_seq_short_pass axil_bvalid_dropped frame_irq_not_reset
 test-formal:
 	@python3 scripts/formal.py $(addprefix --only ,$(FORMAL_QUICK)) --faults $(FORMAL_FAULTS)
 

@@ -19,7 +19,9 @@
  *          (half & sticky) or exactly one half and q is odd (half & q[0]).
  *          The increment cannot overflow 2W-F bits for a product of two W-bit values:
  *          the largest q, 2^(2W-2-F), comes from (-2^(W-1))^2 whose dropped bits are
- *          zero. The rounded value is clamped to the W-bit range.
+ *          zero. The rounded value is clamped to the W-bit range. Whether it fits is
+ *          decided from q's top bits and the increment's carry into them (below), beside
+ *          a W-bit increment of q's low bits, not after a 2W-F-bit one: one carry chain.
  * Rounding: to nearest, ties to even (unbiased: a resting rope does not creep).
  * Overflow: saturates to 2^(W-1)-1 or -2^(W-1); sat = 1 when clamping happened.
  * Latency: combinational, 0 cycles; throughput one result per cycle.
@@ -46,17 +48,27 @@ module fx_round #(
     wire          half   = drop[FS-1];
     wire          sticky = |rest;
     wire          round_up = half & (sticky | q[0]);
-    wire [QW-1:0] qr   = q + {{(QW-1){1'b0}}, round_up};
 
-    // qr fits W bits when its bits QW-1 .. W-1 are all copies of the sign.
-    wire [QW-W:0] top  = qr[QW-1:W-1];
-    wire          fits = (top == {(QW-W+1){1'b0}}) || (top == {(QW-W+1){1'b1}});
+    // The range check does not wait for the increment: only a W-bit carry chain follows
+    // round_up. Split q as {A, B}: A = bits QW-1 .. W-1 (the bits that must be copies of the
+    // sign), B = bits W-2 .. 0. The increment carries into A only when B is all ones; then
+    // A + 1 is all zeros when A is all ones, and all ones when A is ones but a zero LSB.
+    localparam integer AW = QW - W + 1;                            // A's width, >= 3
+    wire [AW-1:0] a_hi   = q[QW-1:W-1];
+    wire          carry  = round_up & (&q[W-2:0]);
+    wire          a_zero = a_hi == {AW{1'b0}};
+    wire          a_ones = a_hi == {AW{1'b1}};
+    wire          a_even_ones = a_hi == {{(AW-1){1'b1}}, 1'b0};
+    wire          fits   = carry ? (a_ones | a_even_ones) : (a_zero | a_ones);
+    wire [W-1:0]  qr_lo  = q[W-1:0] + {{(W-1){1'b0}}, round_up};  // qr's bits W-1 .. 0
 
+    // When qr does not fit, its sign is q's: the increment changes the sign only of
+    // q = -1 (to 0, which fits); q = 2^(QW-1) - 1 is out of reach (above).
     always @* begin
         sat = !fits;
         if (fits)
-            y = qr[W-1:0];
-        else if (qr[QW-1])
+            y = qr_lo;
+        else if (q[QW-1])
             y = {1'b1, {(W-1){1'b0}}}; // below the range: minimum
         else
             y = {1'b0, {(W-1){1'b1}}}; // above the range: maximum
