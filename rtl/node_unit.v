@@ -247,19 +247,27 @@ module node_unit #(
     // ---- port A: during a pass the address runs ahead of vidx by one (node vidx+1 is
     // read while node vidx is written); with PAIR the pass reads rows through the pair
     // read, and port A reads the row's even node (for its flags) ----
-    wire          pass_rd = pass_start || running_q;         // the pass reads its next node (row)
-    wire [IW-1:0] v_step  = pass_start ? {IW{1'b0}} : vidx_q + 1'b1;
+    // A pass starts at node (row) 0, so a_addr is 0 at pass_start; a_addr_run is a_addr in
+    // every other cycle (running: the node, or PAIR the row's even node, after vidx_q)
+    wire [IW-1:0] v_run   = vidx_q + 1'b1;
     /* verilator lint_off UNUSEDSIGNAL */
-    wire [IW:0]   v_even  = {v_step, 1'b0};                  // PAIR: the row's nodes (the top bit is past K)
+    wire [IW:0]   v_even  = {v_run, 1'b0};                   // PAIR: the row's nodes (the top bit is past K)
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [IW-1:0] a_addr  = pass_rd ? (PAIR != 0 ? v_even[IW-1:0] : v_step) : a_idx;
+    wire [IW-1:0] a_addr_run = running_q ? (PAIR != 0 ? v_even[IW-1:0] : v_run) : a_idx;
+    wire [IW-1:0] a_addr  = pass_start ? {IW{1'b0}} : a_addr_run;
     wire          a_re    = {1'b0, a_addr} < K_COUNT;
+    wire          a_re_run = {1'b0, a_addr_run} < K_COUNT;
     wire [K-1:0]  pinned_q;       // the flags (below)
     reg           q_pin, q_grab;
+    // pass_start comes from the frame's start (a command's decode): it chooses after the
+    // K-way flag select, not before it
     always @(posedge clk)
-        if (a_re) begin
-            q_pin  <= pinned_q[a_addr];
-            q_grab <= GRAB && grab_here && a_addr == grab_idx;
+        if (pass_start) begin
+            q_pin  <= pinned_q[0];
+            q_grab <= GRAB && grab_here && grab_idx == {IW{1'b0}};
+        end else if (a_re_run) begin
+            q_pin  <= pinned_q[a_addr_run];
+            q_grab <= GRAB && grab_here && a_addr_run == grab_idx;
         end
     assign a_pinned = q_pin || q_grab;
     // the pass's words arrive with these flags (per way); the pair read is the pass's with PAIR
@@ -268,13 +276,21 @@ module node_unit #(
     wire [IW-1:0] pair_row_e_i, pair_row_o_i;
     generate
         if (PAIR != 0) begin : g_pass_pair
-            // way 1: the row's odd node, its flags read like port A's (and whether it exists)
+            wire          pass_rd = pass_start || running_q;  // the pass reads its next row
+            wire [IW-1:0] v_step  = pass_start ? {IW{1'b0}} : v_run;
+            // way 1: the row's odd node, its flags read like port A's (and whether it exists);
+            // node 1 at pass_start, chosen after the flag select as on port A
+            localparam [IW:0] ODD_FIRST = 1;
             /* verilator lint_off UNUSEDSIGNAL */
-            wire [IW:0] v_odd = {v_step, 1'b1};
+            wire [IW:0] v_odd = {v_run, 1'b1};
             /* verilator lint_on UNUSEDSIGNAL */
             reg q_pin1, q_grab1, q_has1;
             always @(posedge clk)
-                if (pass_rd) begin
+                if (pass_start) begin
+                    q_has1  <= ODD_FIRST < K_COUNT;
+                    q_pin1  <= ODD_FIRST < K_COUNT && pinned_q[ODD_FIRST[IW-1:0]];
+                    q_grab1 <= GRAB && grab_here && ODD_FIRST[IW-1:0] == grab_idx;
+                end else if (running_q) begin
                     q_has1  <= v_odd < K_COUNT;
                     q_pin1  <= v_odd < K_COUNT && pinned_q[v_odd[IW-1:0]];
                     q_grab1 <= GRAB && grab_here && v_odd[IW-1:0] == grab_idx;
