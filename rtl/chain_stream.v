@@ -227,6 +227,19 @@ module chain_stream #(
         at_last_odd  <= !K_EVEN && j_next == J_LAST_ODD;
     end
 
+    // The pipes' first stage is here (their IN_REG = 0): a slot's words are registered as
+    // the memories give them, before any choice among them, so that a block RAM's output
+    // feeds a flip-flop; the choices are made in the next cycle from these copies (_s) of
+    // the slot's flags, colour, number and the rest length.
+    reg           at_first_s, at_last_even_s, at_last_odd_s, colour_s;
+    reg [XW-1:0]  j_s;
+    reg [W-1:0]   rest_s;
+    always @(posedge clk) begin
+        {at_first_s, at_last_even_s, at_last_odd_s, colour_s} <= {at_first, at_last_even, at_last_odd, colour};
+        j_s    <= j;
+        rest_s <= rest_len;
+    end
+
     // ---- every unit's arrivals: stream positions 2j (arr0) and 2j+1 (arr1), as bundles ----
     wire [M*NB-1:0] arr0_all, arr1_all;
     genvar u;
@@ -287,12 +300,23 @@ module chain_stream #(
                 wire unused_take = &{1'b0, take_after};
             end
 
-            // the window (position 2j-1; the centred rule also keeps 2j-2) and the slot's positions
+            // the window (position 2j-1; the centred rule also keeps 2j-2), kept as the slots
+            // issue
             reg  [NB-1:0] w1_q;
-            wire [NB-1:0] p_m1 = at_first ? nb_before : w1_q;                         // 2j-1
-            wire [NB-1:0] p_0  = at_last_even ? nb_after : arr0_all[u*NB +: NB];      // 2j
             wire [NB-1:0] p_1  = at_last_odd ? nb_after : arr1_all[u*NB +: NB];       // 2j+1
             always @(posedge clk) if (slot) w1_q <= p_1;
+            // the slot's positions a cycle after it issues, from the registered copies
+            reg  [NB-1:0] arr0_s, arr1_s, before_s, after_s, w1_s;
+            always @(posedge clk) begin
+                arr0_s   <= arr0_all[u*NB +: NB];
+                arr1_s   <= arr1_all[u*NB +: NB];
+                before_s <= nb_before;
+                after_s  <= nb_after;
+                w1_s     <= w1_q;
+            end
+            wire [NB-1:0] s_m1 = at_first_s ? before_s : w1_s;                       // 2j-1
+            wire [NB-1:0] s_0  = at_last_even_s ? after_s : arr0_s;                  // 2j
+            wire [NB-1:0] s_1  = at_last_odd_s ? after_s : arr1_s;                   // 2j+1
 
             wire [PW-1:0] j_p = {1'b0, j};  // slot number as a position-wide value
             wire [XW-1:0] o_j;              // the result's slot and its parity (position 2j - odd)
@@ -312,17 +336,21 @@ module chain_stream #(
             reg [DW-1:0]  wr_pos_q, wr2_pos_q;
             genvar k;
             if (RULE == 0) begin : g_centred
-                reg  [NB-1:0] w0_q;
-                wire [NB-1:0] p_m2 = w0_q;                                         // 2j-2
+                reg  [NB-1:0] w0_q, w0_s;
+                wire [NB-1:0] p_0 = at_last_even ? nb_after : arr0_all[u*NB +: NB];  // 2j
                 always @(posedge clk) if (slot) w0_q <= p_0;
+                always @(posedge clk) w0_s <= w0_q;
+                wire [NB-1:0] s_m2 = w0_s;                                         // 2j-2
                 // the node at p = 2j (its colour is position 0's) or p = 2j-1, and its neighbours
+                // (valid in the slot's cycle; the rest a cycle later, from the copies)
                 wire          even_p  = S_PAR == colour;
-                wire [NB-1:0] node    = even_p ? p_0  : p_m1;
-                wire [NB-1:0] nb_up   = even_p ? p_m1 : p_m2;   // position p-1
-                wire [NB-1:0] nb_dn   = even_p ? p_1  : p_0;    // position p+1
                 wire          valid   = slot && (even_p ? !at_last_even : !at_first);
-                wire          up_ex   = !(even_p && at_first && !HAS_BEFORE);
-                wire          dn_ex   = even_p ? !(at_last_odd && !HAS_AFTER) : !(at_last_even && !HAS_AFTER);
+                wire          even_s  = S_PAR == colour_s;
+                wire [NB-1:0] node    = even_s ? s_0  : s_m1;
+                wire [NB-1:0] nb_up   = even_s ? s_m1 : s_m2;   // position p-1
+                wire [NB-1:0] nb_dn   = even_s ? s_1  : s_0;    // position p+1
+                wire          up_ex   = !(even_s && at_first_s && !HAS_BEFORE);
+                wire          dn_ex   = even_s ? !(at_last_odd_s && !HAS_AFTER) : !(at_last_even_s && !HAS_AFTER);
                 wire          pin     = node[NB-1];
                 wire             u_valid, u_ok, d_valid, d_ok;
                 wire [DW-1:0]    u_t, d_t;
@@ -330,16 +358,16 @@ module chain_stream #(
                 /* verilator lint_off PINCONNECTEMPTY */
                 // the centred rule's points: nothing is carried
                 dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
-                            .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_up (
+                            .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_up (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_up[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_up[DW +: DW]), .in_pc(node[DW +: DW]),
-                    .in_rest(rest_len), .in_tag({j, !even_p, up_ex, 1'b0, pin}),
+                    .in_rest(rest_s), .in_tag({j_s, !even_s, up_ex, 1'b0, pin}),
                     .out_valid(u_valid), .out_t(u_t), .out_ok(u_ok), .out_tag(u_tag), .out_p(), .out_c());
                 dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
-                            .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_down (
+                            .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_down (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_dn[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_dn[DW +: DW]), .in_pc(node[DW +: DW]),
-                    .in_rest(rest_len), .in_tag({j, !even_p, dn_ex, 1'b0, pin}),
+                    .in_rest(rest_s), .in_tag({j_s, !even_s, dn_ex, 1'b0, pin}),
                     .out_valid(d_valid), .out_t(d_t), .out_ok(d_ok), .out_tag(d_tag), .out_p(), .out_c());
                 /* verilator lint_on PINCONNECTEMPTY */
                 assign o_j   = u_tag[TAG_W-1 -: XW];
@@ -363,22 +391,26 @@ module chain_stream #(
                 wire unused_c = &{1'b0, nb_up[NB-1], nb_dn[NB-1], u_tag[1], d_tag[TAG_W-1:3], d_tag[1:0], o_node1};
             end else begin : g_pairwise
                 // the link (2j, 2j+1) or (2j-1, 2j): its lower node a and higher b
-                wire          even_q = (DOWN ? !S_PAR : S_PAR) == colour;
-                wire [NB-1:0] lo     = even_q ? p_0 : p_m1;     // position q
-                wire [NB-1:0] hi     = even_q ? p_1 : p_0;      // position q+1
+                // (valid in the slot's cycle; the rest a cycle later, from the copies)
+                // the colour of the link at position 0 (a unit streaming downward: its lower node's)
+                localparam [0:0] LINK_PAR = DOWN ? !S_PAR : S_PAR;
+                wire          even_q = LINK_PAR == colour;
+                wire          valid  = slot && (even_q ? !at_last_even : 1'b1);
+                wire          even_s = LINK_PAR == colour_s;
+                wire [NB-1:0] lo     = even_s ? s_0 : s_m1;     // position q
+                wire [NB-1:0] hi     = even_s ? s_1 : s_0;      // position q+1
                 wire [NB-1:0] a      = DOWN ? hi : lo;
                 wire [NB-1:0] b      = DOWN ? lo : hi;
-                wire          valid  = slot && (even_q ? !at_last_even : 1'b1);
-                wire          exists = even_q ? !(at_last_odd && !HAS_AFTER)
-                                              : !(at_first && !HAS_BEFORE) && !(at_last_even && !HAS_AFTER);
+                wire          exists = even_s ? !(at_last_odd_s && !HAS_AFTER)
+                                              : !(at_first_s && !HAS_BEFORE) && !(at_last_even_s && !HAS_AFTER);
                 wire             o_valid, o_ok;
                 wire [DW-1:0]    o_t, o_p, o_c;
                 wire [TAG_W-1:0] o_tag;
                 dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
-                            .CARRY(1'b1), .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
+                            .CARRY(1'b1), .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b1),
                     .in_p(a[0 +: DW]), .in_c(b[0 +: DW]), .in_pp(a[DW +: DW]), .in_pc(b[DW +: DW]),
-                    .in_rest(rest_len), .in_tag({j, !even_q, exists, a[NB-1], b[NB-1]}),
+                    .in_rest(rest_s), .in_tag({j_s, !even_s, exists, a[NB-1], b[NB-1]}),
                     .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
                 assign o_j   = o_tag[TAG_W-1 -: XW];
                 assign o_odd = o_tag[3];

@@ -24,6 +24,7 @@ module dist_pipe #(
     parameter integer TAG_W      = 1,
     parameter [0:0]   CARRY      = 1'b0,  // 1: P and C come out beside T (out_p, out_c)
     parameter [0:0]   PROJECTION = 1'b0,  // 1: toward_prev_pipe
+    parameter [0:0]   IN_REG     = 1'b1,  // 0: every input but in_valid in cycle 1 (toward_pipe)
     parameter integer BLOCK_MIN  = 64     // delay rings: strand_ram's block RAM threshold
 ) (
     input  wire             clk,
@@ -47,13 +48,13 @@ module dist_pipe #(
     generate
         if (PROJECTION) begin : g_previous
             toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
-                               .CARRY(CARRY), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
+                               .CARRY(CARRY), .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
                 .in_p(in_p), .in_c(in_c), .in_pp(in_pp), .in_pc(in_pc), .in_rest(in_rest), .in_tag(in_tag),
                 .out_valid(out_valid), .out_t(out_t), .out_ok(out_ok), .out_tag(out_tag), .out_p(out_p), .out_c(out_c));
         end else begin : g_current
             toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
-                          .CARRY(CARRY), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
+                          .CARRY(CARRY), .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
                 .in_p(in_p), .in_c(in_c), .in_rest(in_rest), .in_tag(in_tag),
                 .out_valid(out_valid), .out_t(out_t), .out_ok(out_ok), .out_tag(out_tag), .out_p(out_p), .out_c(out_c));

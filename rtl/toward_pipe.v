@@ -41,7 +41,8 @@
  *
  * Ports: p, c are DIM lanes of signed Q(W-F).F (lane k at bits k W +: W); rest unsigned
  * Q(W-F).F; tag: TAG_W bits the caller gets back with the result. Only the valid bits
- * are reset.
+ * are reset. With IN_REG = 0 every input but in_valid comes in cycle 1, from the
+ * caller's registers (which then are this pipe's first stage).
  */
 module toward_pipe #(
     parameter integer W         = 32,
@@ -52,6 +53,7 @@ module toward_pipe #(
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter [0:0]   CARRY     = 1'b0,   // 1: P and C come out beside T (out_p, out_c)
+    parameter [0:0]   IN_REG    = 1'b1,   // 0: the caller's registers are cycle 1's (below)
     parameter integer BLOCK_MIN = 64      // delay rings: strand_ram's block RAM threshold
 ) (
     input  wire             clk,
@@ -94,17 +96,20 @@ module toward_pipe #(
     assign out_valid = v_q[LATENCY-1];
 
     // ---- cycle 1: d = C - P ----
+    // IN_REG = 0: the caller registers P, C, rest, the tag and excess itself and gives them
+    // in cycle 1 (in_valid still in cycle 0), so that it can choose among registered words
+    // there; the latency is the same
     reg [DIM*W-1:0] p1, c1, c2;
     reg [W-1:0]     rest1;
     reg [TAG_W-1:0] tag1;
     reg             excess1;
-    always @(posedge clk) begin
-        p1      <= in_p;
-        c1      <= in_c;
-        rest1   <= in_rest;
-        tag1    <= in_tag;
-        excess1 <= in_excess;
-    end
+    generate
+        if (IN_REG) begin : g_in_reg
+            always @(posedge clk) {p1, c1, rest1, tag1, excess1} <= {in_p, in_c, in_rest, in_tag, in_excess};
+        end else begin : g_in_late
+            always @* {p1, c1, rest1, tag1, excess1} = {in_p, in_c, in_rest, in_tag, in_excess};
+        end
+    endgenerate
     wire [DIM*W-1:0] d1;
     genvar k;
     generate

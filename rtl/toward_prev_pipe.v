@@ -38,7 +38,8 @@
  * with PROJECTION): an operation on the inputs in cycle 0 has out_valid, out_t, out_ok,
  * out_tag (and out_p, out_c with CARRY) in cycle LATENCY. Throughput one a clock.
  *
- * Ports: toward_pipe's, and in_pp, in_pc: P's and C's previous positions.
+ * Ports: toward_pipe's, and in_pp, in_pc: P's and C's previous positions (IN_REG as
+ * toward_pipe's: 0, every input but in_valid in cycle 1).
  */
 module toward_prev_pipe #(
     parameter integer W         = 32,
@@ -49,6 +50,7 @@ module toward_prev_pipe #(
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
     parameter [0:0]   CARRY     = 1'b0,   // 1: P and C come out beside T (out_p, out_c)
+    parameter [0:0]   IN_REG    = 1'b1,   // 0: the caller's registers are cycle 1's (toward_pipe's)
     parameter integer BLOCK_MIN = 64
 ) (
     input  wire             clk,
@@ -102,7 +104,7 @@ module toward_prev_pipe #(
     /* verilator lint_off PINCONNECTEMPTY */
     // its valid, tag, P and C come with this pipe's own
     toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(1),
-                  .BLOCK_MIN(BLOCK_MIN)) u_cur (
+                  .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_cur (
         .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
         .in_p(in_p), .in_c(in_c), .in_rest(in_rest), .in_tag(1'b0),
         .out_valid(), .out_t(cur_t), .out_ok(cur_ok), .out_tag(), .out_p(), .out_c());
@@ -115,7 +117,13 @@ module toward_prev_pipe #(
     reg [W-1:0]     rest1;
     reg [TAG_W-1:0] tag1;
     reg             excess1;
-    always @(posedge clk) {p1, c1, pp1, pc1, rest1, tag1, excess1} <= {in_p, in_c, in_pp, in_pc, in_rest, in_tag, in_excess};
+    generate
+        if (IN_REG) begin : g_in_reg
+            always @(posedge clk) {p1, c1, pp1, pc1, rest1, tag1, excess1} <= {in_p, in_c, in_pp, in_pc, in_rest, in_tag, in_excess};
+        end else begin : g_in_late   // every input but in_valid in cycle 1, from the caller's registers
+            always @* {p1, c1, pp1, pc1, rest1, tag1, excess1} = {in_p, in_c, in_pp, in_pc, in_rest, in_tag, in_excess};
+        end
+    endgenerate
     wire [DW-1:0] q1, r1;
     genvar k;
     /* verilator lint_off PINCONNECTEMPTY */
