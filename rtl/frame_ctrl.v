@@ -102,6 +102,7 @@ module frame_ctrl #(
         if (!GRAPH) begin : g_walk
             reg [AW-1:0]    addr_q;
             reg [AW-1:0]    after_q;   // next_node(addr_q), kept a cycle ahead (below)
+            reg [AW-1:0]    ahead_q;   // init_addr_next: after_q in the walk, else 0
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
             wire [DIM*W-1:0] pos_next;
@@ -116,23 +117,28 @@ module frame_ctrl #(
             // cycle ahead, so that the lookup is not on the memory's write path. after_q holds
             // the address after addr_q, so that no incrementer sits before that lookup. The flag
             // is used only in the walk, which always starts at node 0 from PH_IDLE: so outside
-            // PH_INIT the next address is 0, and the command decode (walk) stays off this path.
-            assign init_addr_next = phase == PH_INIT ? after_q : {AW{1'b0}};
+            // PH_INIT the next address is 0. ahead_q is that choice, registered from the next
+            // cycle's phase and after_q, so that neither the phase's decode nor the command's
+            // sits before the K-way lookup.
+            assign init_addr_next = ahead_q;
             localparam [AW-1:0] ADDR_ZERO = {AW{1'b0}};
             always @(posedge clk) begin
                 if (reset) begin
                     addr_q  <= {AW{1'b0}};
                     after_q <= next_node(ADDR_ZERO);
+                    ahead_q <= {AW{1'b0}};
                     count_q <= {CW{1'b0}};
                     pos_q   <= {(DIM*W){1'b0}};
-                end else if (phase == PH_IDLE && walk) begin
+                end else if (phase == PH_IDLE && walk) begin   // phase goes to PH_INIT
                     addr_q  <= {AW{1'b0}};
                     after_q <= next_node(ADDR_ZERO);
+                    ahead_q <= next_node(ADDR_ZERO);
                     count_q <= {CW{1'b0}};
                     pos_q   <= start_pos;
                 end else if (phase == PH_INIT) begin
                     addr_q  <= after_q;
                     after_q <= next_node(after_q);
+                    ahead_q <= walk_end ? {AW{1'b0}} : next_node(after_q);  // walk_end: to PH_IDLE
                     count_q <= count_q + 1'b1;
                     pos_q   <= pos_next;
                 end
