@@ -565,9 +565,16 @@ def goals_table():
         mhz, b = placed[0]
         chains = [x for x in placed if not synth.BUILD_MAP[x[1]][0].get("GRAPH")]
         each = ", ".join(f"{x[1]} {x[0]:.1f}" for x in placed)
+        # the goal is judged on the best build and, apart, on the largest (the CPU ratio's)
+        largest = GOALS.get("ratio")
+        status = met(mhz >= GOAL_MHZ)
+        of_largest = ""
+        if largest is not None and largest[0] != b.removesuffix("_pipe"):
+            of_largest = f"; the largest placed pipelined chain, {largest[0]}: {largest[2]:.1f} MHz"
+            status = f"{met(mhz >= GOAL_MHZ)} ({b}); {met(largest[2] >= GOAL_MHZ)} ({largest[0]})"
         rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | the best pipelined build make synth placed, {b}: "
-                    f"{mhz:.1f} MHz (all placed: {each} MHz{'' if chains else '; no pipelined chain placed for this RTL'})"
-                    f" | {met(mhz >= GOAL_MHZ)} |")
+                    f"{mhz:.1f} MHz{of_largest} (all placed: {each} MHz"
+                    f"{'' if chains else '; no pipelined chain placed for this RTL'}) | {status} |")
     else:
         rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | no pipelined build placed for this RTL | **not measured** |")
     if "ratio" in GOALS:
