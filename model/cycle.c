@@ -595,9 +595,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     }
 
     /* Combinational signals of this cycle, from the state before the edge. */
-    /* frame_ctrl: CMD starts the init walk of a chain (a graph has none) */
-    const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph;
-    const bool frame_start = c->phase == PH_IDLE && !cmd_init && in->step;
+    /* frame_ctrl: CMD starts the init walk of a chain (a graph has none); a step in the
+     * same cycle wins */
+    const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph && !in->step;
+    const bool frame_start = c->phase == PH_IDLE && in->step;
     const bool verlet_end = c->phase == PH_VERLET && c->done;
     const bool seq_done = graph_streams(hp) ? c->gs_done : hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
     const bool force_done = chain_streams(hp) ? c->sp_done : c->force.done;

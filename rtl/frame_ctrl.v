@@ -81,7 +81,10 @@ module frame_ctrl #(
     localparam [SW-1:0] SUB_LAST  = SUB_LAST_I[SW-1:0];
 
     reg [SW-1:0] substep_q;
-    wire         walk = cmd_init && !GRAPH;  // the init walk starts
+    // the init walk starts. A step in the same cycle wins (the CMD is ignored, as in any
+    // busy phase): so the command's address decode is not on frame_start's path, which
+    // fans out to every unit's pass start
+    wire         walk = cmd_init && !GRAPH && !step;
     wire         walk_end;                   // its last node is written now
 
     // A substep: [FORCE] VERLET [CONSTRAIN] [GROUND]; each phase starts in the cycle the one before ends.
@@ -89,7 +92,7 @@ module frame_ctrl #(
     wire body_end      = EN_CONSTRAINTS ? phase == PH_CONSTRAIN && seq_done : verlet_end;
     wire substep_end   = EN_GROUND ? phase == PH_GROUND && fv : body_end;
     wire substep_start = (HAS_GRAB ? scan_end : frame_start) || (substep_end && substep_q != SUB_LAST);
-    assign frame_start  = phase == PH_IDLE && !walk && step;
+    assign frame_start  = phase == PH_IDLE && step;
     assign ground_start = body_end && EN_GROUND;
     assign force_start  = substep_start && EN_SPRINGS;
     assign verlet_start = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);

@@ -111,6 +111,15 @@ FAULTS["odd_pin"] = [
      "            wire unused_fault = &{1'b0, q_pin1};\n"),
 ]
 
+# frame_ctrl: CMD beside a step wins (the priority before the step's was given first), so a
+# frame's step with a CMD in its cycle lays the chain out again instead of starting the frame
+FAULTS["step_priority"] = [
+    ("frame_ctrl.v", r"^    wire         walk = cmd_init && !GRAPH && !step;\n",
+     "    wire         walk = cmd_init && !GRAPH;  // planted fault: CMD wins over step\n"),
+    ("frame_ctrl.v", r"^    assign frame_start  = phase == PH_IDLE && step;\n",
+     "    assign frame_start  = phase == PH_IDLE && !walk && step;\n"),
+]
+
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
 ORDER = {"boundary": "redblack", "slots_cut": "redblack", "bypass": "redblack", "hazard": "redblack",
          "graph_hazard": "redblack", "graph_boundary": "redblack", "stage_r": "redblack", "odd_pin": "redblack"}

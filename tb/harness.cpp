@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -346,6 +346,11 @@ bool Run::cycle(const cyc_inputs &in) {
     }
     if (o_.expect == "bypass" && r_.predicted_fault < 0 && !in.reset && cyc_stream_write_due(&model_))
         r_.predicted_fault = cyc_;
+    // step_priority: a CMD beside a step in IDLE starts the chain's init walk instead of the
+    // frame, so the RTL shows phase INIT the cycle after
+    if (o_.expect == "step_priority" && r_.predicted_fault < 0 && !in.reset && in.step && in.cfg_we &&
+        in.cfg_addr == STRAND_REG_CMD && (in.cfg_data & 1) && model_.phase == PH_IDLE && !hp_.graph)
+        r_.predicted_fault = cyc_ + 1;
     if (compared_ && rtl_on_ && model_on_ && !compare()) {
         r_.ok = false;
         r_.mismatch_cycle = cyc_;
@@ -492,10 +497,17 @@ Result Run::go(int frames) {
         in.mouse_down = sc_.en_mouse && down;
         if (quiet_mouse()) in.mouse_x = in.mouse_y = in.mouse_z = 0;
         in.step = true;
+        // now and then a CMD in the same cycle: the step wins and the CMD is ignored
+        if (rng_.below(4) == 0) {
+            in.cfg_we = true;
+            in.cfg_addr = STRAND_REG_CMD;
+            in.cfg_data = ((uint32_t)rng_.next() & mask_) | 1u;
+        }
         long start = cyc_;
         if (r_.first_frame_cycle < 0) r_.first_frame_cycle = cyc_;
         if (!cycle(in)) return r_;
         in.step = false;
+        in.cfg_we = false;
         do {
             noise(in);
             if (reset_at_ >= 0 && cyc_ >= reset_at_) { // a reset in the middle of a frame
@@ -550,7 +562,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -596,8 +608,8 @@ int main(int argc, char **argv) {
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
         o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary" &&
-        o.expect != "stage_r" && o.expect != "odd_pin")
-        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary, stage_r or odd_pin");
+        o.expect != "stage_r" && o.expect != "odd_pin" && o.expect != "step_priority")
+        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary, stage_r, odd_pin or step_priority");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
     if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 
