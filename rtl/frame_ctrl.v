@@ -65,7 +65,8 @@ module frame_ctrl #(
 
     output wire             init_we,       // the init walk writes node init_addr now
     output wire [AW-1:0]    init_addr,
-    output wire [AW-1:0]    init_addr_next, // in the walk, init_addr after this edge; else 0 (the walk's first node)
+    output wire [AW-1:0]    init_addr_next, // init_addr after this edge (outside the walk: the walk's second node)
+    output wire             init_node0,    // init_addr is a unit's node 0 (outside the walk too: the first node)
     output wire [DIM*W-1:0] init_pos,
     output wire [DIM*W-1:0] init_prev
 );
@@ -105,7 +106,8 @@ module frame_ctrl #(
         if (!GRAPH) begin : g_walk
             reg [AW-1:0]    addr_q;
             reg [AW-1:0]    after_q;   // next_node(addr_q), kept a cycle ahead (below)
-            reg [AW-1:0]    ahead_q;   // init_addr_next: after_q in the walk, else 0
+            reg [AW-1:0]    ahead_q;   // init_addr_next: next_node(after_q)
+            reg             node0_q;   // init_node0: addr_q's node bits are 0
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
             wire [DIM*W-1:0] pos_next;
@@ -118,32 +120,34 @@ module frame_ctrl #(
             end
             // The next address, also out: node_unit looks up the next node's pinned flag a
             // cycle ahead, so that the lookup is not on the memory's write path. after_q holds
-            // the address after addr_q, so that no incrementer sits before that lookup. The flag
-            // is used only in the walk, which always starts at node 0 from PH_IDLE: so outside
-            // PH_INIT the next address is 0. ahead_q is that choice, registered from the next
-            // cycle's phase and after_q, so that neither the phase's decode nor the command's
-            // sits before the K-way lookup.
+            // the address after addr_q, so that no incrementer sits before that lookup.
+            // Outside the walk every register holds what the walk's first cycle needs (its
+            // end puts them back), so that the walk starts without loading any of them: the
+            // command's decode, which decides that start, reaches only the phase. The first
+            // node's flag cannot come from that lookup (in the cycle before the walk the
+            // address ahead is already the second node), so node_unit also keeps node 0's
+            // flag, and init_node0 picks it for the write of a unit's node 0.
             assign init_addr_next = ahead_q;
+            assign init_node0     = node0_q;
             localparam [AW-1:0] ADDR_ZERO = {AW{1'b0}};
+            localparam [AW-1:0] ADDR_ONE  = next_node(ADDR_ZERO);
             always @(posedge clk) begin
                 if (reset) begin
-                    addr_q  <= {AW{1'b0}};
-                    after_q <= next_node(ADDR_ZERO);
-                    ahead_q <= {AW{1'b0}};
+                    addr_q  <= ADDR_ZERO;
+                    after_q <= ADDR_ONE;
+                    ahead_q <= ADDR_ONE;
+                    node0_q <= 1'b1;
                     count_q <= {CW{1'b0}};
                     pos_q   <= {(DIM*W){1'b0}};
-                end else if (phase == PH_IDLE && walk) begin   // phase goes to PH_INIT
-                    addr_q  <= {AW{1'b0}};
-                    after_q <= next_node(ADDR_ZERO);
-                    ahead_q <= next_node(ADDR_ZERO);
-                    count_q <= {CW{1'b0}};
-                    pos_q   <= start_pos;
                 end else if (phase == PH_INIT) begin
-                    addr_q  <= after_q;
-                    after_q <= next_node(after_q);
-                    ahead_q <= walk_end ? {AW{1'b0}} : next_node(after_q);  // walk_end: to PH_IDLE
-                    count_q <= count_q + 1'b1;
+                    addr_q  <= walk_end ? ADDR_ZERO : after_q;
+                    after_q <= walk_end ? ADDR_ONE : next_node(after_q);
+                    ahead_q <= walk_end ? ADDR_ONE : next_node(after_q);
+                    node0_q <= walk_end || after_q[IW-1:0] == {IW{1'b0}};
+                    count_q <= walk_end ? {CW{1'b0}} : count_q + 1'b1;
                     pos_q   <= pos_next;
+                end else begin
+                    pos_q   <= start_pos;   // read only in the walk: the walk starts here
                 end
             end
             assign walk_end  = phase == PH_INIT && count_q == N_LAST;
@@ -153,6 +157,7 @@ module frame_ctrl #(
             assign walk_end  = 1'b0;
             assign init_addr = {AW{1'b0}};
             assign init_addr_next = {AW{1'b0}};
+            assign init_node0     = 1'b0;
             assign init_pos  = {(DIM*W){1'b0}};
             assign init_prev = {(DIM*W){1'b0}};
             wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};

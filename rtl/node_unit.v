@@ -88,6 +88,7 @@ module node_unit #(
     input  wire [DIM*W-1:0] w_prev,       //   to this, or to w_pos for a pinned node
     input  wire [IW-1:0]    rest_idx,     // the node an at-rest write's pinned flag is looked up for: a
                                           //   graph's NODE load's (now); a chain's init walk's next node
+    input  wire             rest_node0,   // a chain's init walk: the write is to node 0 (its flag is kept apart)
     input  wire             pin_en,       // pin node pin_idx
     input  wire [IW-1:0]    pin_idx,
 
@@ -364,17 +365,26 @@ module node_unit #(
     // select over the flags, is kept off the memories' write data: a graph's NODE load
     // looks up rest_idx (= w_idx then) apart from w_idx's select among the four writers; a
     // chain's init walk registers the flag of the node it writes next (rest_idx), with a
-    // PIN of that node in the same cycle, which is what pinned_q holds then.
+    // PIN of that node in the same cycle, which is what pinned_q holds then; and node 0's
+    // flag, likewise, for the write of node 0 (rest_node0), whose lookup cannot come a
+    // cycle ahead: the walk starts at it, and the command that starts it does not reach
+    // rest_idx (frame_ctrl).
     wire           w_pin;
     generate
         if (GRAPH) begin : g_load_pin
             assign w_pin = {1'b0, rest_idx} < K_COUNT && pinned_q[rest_idx];
+            wire unused_node0 = &{1'b0, rest_node0};
         end else begin : g_walk_pin
-            reg next_pin_q;
+            reg next_pin_q, node0_pin_q;
             always @(posedge clk)
-                if (reset) next_pin_q <= 1'b0;
-                else       next_pin_q <= {1'b0, rest_idx} < K_COUNT && (pinned_q[rest_idx] || (pin_en && pin_idx == rest_idx));
-            assign w_pin = next_pin_q;
+                if (reset) begin
+                    next_pin_q  <= 1'b0;
+                    node0_pin_q <= 1'b0;
+                end else begin
+                    next_pin_q  <= {1'b0, rest_idx} < K_COUNT && (pinned_q[rest_idx] || (pin_en && pin_idx == rest_idx));
+                    node0_pin_q <= pinned_q[0] || (pin_en && pin_idx == {IW{1'b0}});
+                end
+            assign w_pin = rest_node0 ? node0_pin_q : next_pin_q;
         end
     endgenerate
     // the force: the Verlet pass consumes node idx_w's (each way's), the init walk and loads clear node w_idx's

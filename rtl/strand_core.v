@@ -102,6 +102,7 @@ module strand_core #(
     /* verilator lint_off UNUSEDSIGNAL */
     // the units use only its node bits: a unit's w_pin is read only when the walk is in the unit
     wire [AW-1:0] init_addr_next;
+    wire          init_node0;
     /* verilator lint_on UNUSEDSIGNAL */
     wire [DW-1:0] init_pos, init_prev;
     wire [DW-1:0] mouse_lanes;  // the pointer, one lane per axis
@@ -115,7 +116,7 @@ module strand_core #(
         .phase(phase), .frame_start(frame_start), .verlet_start(verlet_start), .ground_start(ground_start),
         .seq_start(seq_start), .force_start(force_start), .frame_done(frame_done), .irq(irq),
         .mouse_q(mouse_q), .mouse_down_q(mouse_down_q), .box(box), .touch_lo(touch_lo), .touch_hi(touch_hi),
-        .init_we(init_we), .init_addr(init_addr), .init_addr_next(init_addr_next), .init_pos(init_pos), .init_prev(init_prev));
+        .init_we(init_we), .init_addr(init_addr), .init_addr_next(init_addr_next), .init_node0(init_node0), .init_pos(init_pos), .init_prev(init_prev));
     assign busy = phase != PH_IDLE;
     // NODE and EDGE writes load a graph's body, only when idle (a chain is laid out by CMD)
     wire node_we = node_we_any && phase == PH_IDLE && GRAPH;
@@ -357,7 +358,7 @@ module strand_core #(
                 .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? acc_idx_all[u*IW +: IW] : seq_widx[u*IW +: IW]),
                 .w_pos(here_init ? init_pos : here_load ? load_pos : seq_wpos[u*DW +: DW]),
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
-                .rest_idx(GRAPH ? cfg_node[IW-1:0] : init_addr_next[IW-1:0]),
+                .rest_idx(GRAPH ? cfg_node[IW-1:0] : init_addr_next[IW-1:0]), .rest_node0(init_node0),
                 .pin_en(pin_we && cfg_node[AW-1:IW] == U_ID), .pin_idx(cfg_node[IW-1:0]),
                 .b_idx(rd_addr[IW-1:0]), .b_pos(b_pos_all[u*DW +: DW]),
                 .pair_re(pair_re), .pair_row_e(pair_row_e_all[u*IW +: IW]), .pair_row_o(pair_row_o_all[u*IW +: IW]),
