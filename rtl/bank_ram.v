@@ -27,12 +27,16 @@
  *                bank reads row prow_e and the odd bank row prow_o; the words come
  *                out on rdata_e and rdata_o (the banks' own outputs, which also
  *                carry a port-A read's two rows).
- *   read port B (re_b, raddr_b; READ_B): one node, as port A.
+ *   read port B (re_b, raddr_b; READ_B): one node, as port A; with B_REG, its word
+ *                is registered once more, as each bank gives it (rdata_b two cycles
+ *                after raddr_b, the bank select after that register): a block RAM's
+ *                output without its output register is slow (about 5.8 ns on an ECP5)
+ *                and then reaches only a flip-flop beside it.
  *
  * With BANKS = 1 it is one strand_ram and the pair and second-write ports are unused
  * (rdata_e carries port A's word, rdata_o is 0).
  *
- * Latency: 1 cycle per read; throughput: BANKS writes and BANKS port-A reads a cycle
+ * Latency: 1 cycle per read (port B with B_REG: 2); throughput: BANKS writes and BANKS port-A reads a cycle
  * (one a bank), and one port-B read.
  */
 module bank_ram #(
@@ -41,7 +45,8 @@ module bank_ram #(
     parameter integer ABITS     = 4,  // node address bits, 2^ABITS >= DEPTH
     parameter integer BLOCK_MIN = 64, // strand_ram's block RAM threshold (per bank)
     parameter [0:0]   READ_B    = 1'b1, // 0: no port B (rdata_b is 0)
-    parameter integer BANKS     = 1   // 1: one memory; 2: even and odd banks
+    parameter integer BANKS     = 1,  // 1: one memory; 2: even and odd banks
+    parameter [0:0]   B_REG     = 1'b0 // 1: port B's word registered once more (latency 2)
 ) (
     input  wire             clk,
     input  wire             reset,    // only for the simulation check below (the memory is not reset)
@@ -68,10 +73,18 @@ module bank_ram #(
 
     generate
         if (BANKS == 1) begin : g_one
+            wire [WIDTH-1:0] q_b;
             strand_ram #(.WIDTH(WIDTH), .DEPTH(DEPTH), .ABITS(ABITS), .BLOCK_MIN(BLOCK_MIN), .READ_B(READ_B)) u_ram (
                 .clk(clk), .we(we), .waddr(waddr), .wdata(wdata),
                 .re_a(re_a), .raddr_a(raddr_a), .rdata_a(rdata_a),
-                .re_b(re_b), .raddr_b(raddr_b), .rdata_b(rdata_b));
+                .re_b(re_b), .raddr_b(raddr_b), .rdata_b(q_b));
+            if (B_REG) begin : g_b_reg
+                reg [WIDTH-1:0] q_b_r;
+                always @(posedge clk) q_b_r <= q_b;
+                assign rdata_b = q_b_r;
+            end else begin : g_b_now
+                assign rdata_b = q_b;
+            end
             assign rdata_e = rdata_a;
             assign rdata_o = {WIDTH{1'b0}};
             wire unused_pair = &{1'b0, reset, we2, waddr2, wdata2, pair_re, prow_e, prow_o};
@@ -113,7 +126,18 @@ module bank_ram #(
                 if (re_b) sel_b <= raddr_b[0];
             end
             assign rdata_a = sel_a ? q_a[1] : q_a[0];
-            assign rdata_b = sel_b ? q_b[1] : q_b[0];
+            if (B_REG) begin : g_b_reg
+                reg [WIDTH-1:0] q_b_r [0:1];
+                reg             sel_b_r;
+                always @(posedge clk) begin
+                    q_b_r[0] <= q_b[0];
+                    q_b_r[1] <= q_b[1];
+                    sel_b_r  <= sel_b;
+                end
+                assign rdata_b = sel_b_r ? q_b_r[1] : q_b_r[0];
+            end else begin : g_b_now
+                assign rdata_b = sel_b ? q_b[1] : q_b[0];
+            end
             assign rdata_e = q_a[0];
             assign rdata_o = q_a[1];
         end

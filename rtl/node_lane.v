@@ -106,7 +106,7 @@ module node_lane #(
     output wire [W-1:0]  q,          // port A: position, previous position, force
     output wire [W-1:0]  qp,
     output wire [W-1:0]  qa,
-    output wire [W-1:0]  b_data,     // port B: position (node_unit masks unwritten nodes)
+    output wire [W-1:0]  b_data,     // port B: position, two cycles after b_addr (node_unit masks unwritten nodes)
     output wire [W-1:0]  q_e,        // PAIR: the banks' words, position and previous position
     output wire [W-1:0]  q_o,        //   (a pair read's, or a port-A read's two rows)
     output wire [W-1:0]  qp_e,
@@ -138,7 +138,7 @@ module node_lane #(
 
     // positions and previous positions: two banks with PAIR (the second write port and the
     // pair read are the pipelined passes')
-    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR)) u_pos (
+    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR), .B_REG(1'b1)) u_pos (
         .clk(clk), .reset(reset), .we(we), .waddr(widx), .wdata(wdata), .we2(PAIR != 0 && we2), .waddr2(widx2), .wdata2(wdata2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(q),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(q_e), .rdata_o(q_o),

@@ -451,22 +451,22 @@ module node_unit #(
         end
     endgenerate
 
-    // ---- port B: a node not written since reset reads as 0; the word is registered once
-    // more (b_pos two cycles after b_idx), so that the path from the block RAM's
-    // unregistered output ends here and the core's selection over the units starts from a
-    // flip-flop: that path (block RAM, bank select, unit select, bus) set the clock of the
-    // multi-unit builds ----
-    reg              b_ok;
-    reg [DIM*W-1:0]  b_pos_q;
+    // ---- port B: a node not written since reset reads as 0. The memory registers its word
+    // once more (b_pos two cycles after b_idx; bank_ram B_REG), each bank's as the block RAM
+    // gives it, so that the RAM's slow unregistered output reaches only a flip-flop; the
+    // bank select, this mask and the core's selection over the units come after. (The word
+    // registered after the bank select instead put the RAM's output, a long route and the
+    // select on one path, which set the clock of the largest build.) ----
+    reg b_ok, b_ok_r;  // the node was written, when b_idx was given; a cycle later
     always @(posedge clk)
         if (reset) begin
-            b_ok    <= 1'b0;
-            b_pos_q <= {(DIM*W){1'b0}};
+            b_ok   <= 1'b0;
+            b_ok_r <= 1'b0;
         end else begin
-            b_ok    <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
-            b_pos_q <= b_ok ? b_pos_raw : {(DIM*W){1'b0}};
+            b_ok   <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
+            b_ok_r <= b_ok;
         end
-    assign b_pos = b_pos_q;
+    assign b_pos = b_ok_r ? b_pos_raw : {(DIM*W){1'b0}};
 
     // ---- the write-back lanes (DEBUG) ----
     generate
