@@ -131,6 +131,8 @@ module node_unit #(
     reg          running_q, running_d;  // a pass is under way: a node is in stage A
     reg          done_q, done_d;        // FV
     reg [IW-1:0] vidx_q, vidx_d;        // node (row) whose data port A (the pair read) returns this cycle
+    reg [IW-1:0] vrun_q;                // vidx_q + 1, a register: no incrementer before port A's address
+    localparam [IW-1:0] IDX_ONE = 1;
     reg          ground_q, ground_d;    // the pass under way is the ground pass
     wire         stage_a, ground_a;     // stage A: a node of the pass (below)
     wire [PAIR:0] pin_a, grab_a, has_a;
@@ -160,7 +162,7 @@ module node_unit #(
             ground_d  = !verlet_start;
         end else begin
             if (running_q) begin
-                vidx_d = vidx_q + 1'b1;
+                vidx_d = vrun_q;
                 if (last) running_d = 1'b0;
             end
             if (pass_w && idx_w == S_LAST) done_d = 1'b1;  // the last node (row) is written
@@ -172,6 +174,7 @@ module node_unit #(
             running_q <= 1'b0;
             done_q    <= 1'b0;
             vidx_q    <= {IW{1'b0}};
+            vrun_q    <= IDX_ONE;
             ground_q  <= 1'b0;
             stage_b   <= 1'b0;
             stage_c   <= 1'b0;
@@ -180,6 +183,7 @@ module node_unit #(
             running_q <= running_d;
             done_q    <= done_d;
             vidx_q    <= vidx_d;
+            vrun_q    <= vidx_d + 1'b1;
             ground_q  <= ground_d;
             stage_b   <= stage_a;
             stage_c   <= stage_b;
@@ -250,7 +254,7 @@ module node_unit #(
     // read, and port A reads the row's even node (for its flags) ----
     // A pass starts at node (row) 0, so a_addr is 0 at pass_start; a_addr_run is a_addr in
     // every other cycle (running: the node, or PAIR the row's even node, after vidx_q)
-    wire [IW-1:0] v_run   = vidx_q + 1'b1;
+    wire [IW-1:0] v_run   = vrun_q;
     /* verilator lint_off UNUSEDSIGNAL */
     wire [IW:0]   v_even  = {v_run, 1'b0};                   // PAIR: the row's nodes (the top bit is past K)
     /* verilator lint_on UNUSEDSIGNAL */
