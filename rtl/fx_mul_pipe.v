@@ -21,9 +21,12 @@
  * second. Every step is exact, so prod is a * b bit for bit.
  *
  * Operands of at most ONE_BLOCK_W bits (18: the ECP5's MULT18X18D, a signed 18 x 18
- * block) need no split: one block forms a * b in the first stage and the second only
- * registers it again, so the latency stays 2 and a Q10.8 datapath takes one block a
- * product, not three. ONE_BLOCK_W = 0 forces the split at any width (the unit bench
+ * block) need no split: the first stage registers the operands and the second is one
+ * block's product, registered, so the latency stays 2 and a Q10.8 datapath takes one
+ * block a product, not three. The operands' registers feed the block alone, so they
+ * sit beside it: the route from the caller's registers to a multiplier column gets a
+ * cycle of its own (as the block's own input registers would give, which synthesis
+ * does not use). ONE_BLOCK_W = 0 forces the split at any width (the unit bench
  * checks the split exhaustively at W = 8 that way).
  *
  * Latency: operands on the inputs in cycle 0 give prod in cycle 2. Throughput one
@@ -42,11 +45,12 @@ module fx_mul_pipe #(
     `STRAND_CHECK(fx_mul_pipe_W, W >= 8 && W <= 32, ("fx_mul_pipe: W must be 8..32 (W=%0d) in %m", W))
 
     generate if (W <= ONE_BLOCK_W) begin : g_one_block
-        // stage 1: the product in one block; stage 2: registered again (the split's latency)
-        reg signed [2*W-1:0] prod_s1;
+        // stage 1: the operands registered; stage 2: their product in one block, registered
+        reg signed [W-1:0] a_s1, b_s1;
         always @(posedge clk) begin
-            prod_s1 <= $signed(a) * $signed(b);
-            prod    <= prod_s1;
+            a_s1 <= a;
+            b_s1 <= b;
+            prod <= a_s1 * b_s1;
         end
     end else begin : g_split
         localparam integer H  = (W + 1) / 2;  // low part bits
