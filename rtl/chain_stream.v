@@ -231,11 +231,13 @@ module chain_stream #(
     // the memories give them, before any choice among them, so that a block RAM's output
     // feeds a flip-flop; the choices are made in the next cycle from these copies (_s) of
     // the slot's flags, colour, number and the rest length.
-    reg           at_first_s, at_last_even_s, at_last_odd_s, colour_s;
+    // The window too is kept from these copies, a cycle after the slot (slot_s): so no
+    // choice sits between a memory's output and a register.
+    reg           slot_s, at_first_s, at_last_even_s, at_last_odd_s, colour_s;
     reg [XW-1:0]  j_s;
     reg [W-1:0]   rest_s;
     always @(posedge clk) begin
-        {at_first_s, at_last_even_s, at_last_odd_s, colour_s} <= {at_first, at_last_even, at_last_odd, colour};
+        {slot_s, at_first_s, at_last_even_s, at_last_odd_s, colour_s} <= {slot, at_first, at_last_even, at_last_odd, colour};
         j_s    <= j;
         rest_s <= rest_len;
     end
@@ -300,23 +302,21 @@ module chain_stream #(
                 wire unused_take = &{1'b0, take_after};
             end
 
-            // the window (position 2j-1; the centred rule also keeps 2j-2), kept as the slots
-            // issue
-            reg  [NB-1:0] w1_q;
-            wire [NB-1:0] p_1  = at_last_odd ? nb_after : arr1_all[u*NB +: NB];       // 2j+1
-            always @(posedge clk) if (slot) w1_q <= p_1;
             // the slot's positions a cycle after it issues, from the registered copies
-            reg  [NB-1:0] arr0_s, arr1_s, before_s, after_s, w1_s;
+            reg  [NB-1:0] arr0_s, arr1_s, before_s, after_s;
             always @(posedge clk) begin
                 arr0_s   <= arr0_all[u*NB +: NB];
                 arr1_s   <= arr1_all[u*NB +: NB];
                 before_s <= nb_before;
                 after_s  <= nb_after;
-                w1_s     <= w1_q;
             end
+            // the window (position 2j-1; the centred rule also keeps 2j-2): the previous
+            // slot's positions, kept as each slot's copies are chosen (slot_s)
+            reg  [NB-1:0] w1_s;
             wire [NB-1:0] s_m1 = at_first_s ? before_s : w1_s;                       // 2j-1
             wire [NB-1:0] s_0  = at_last_even_s ? after_s : arr0_s;                  // 2j
             wire [NB-1:0] s_1  = at_last_odd_s ? after_s : arr1_s;                   // 2j+1
+            always @(posedge clk) if (slot_s) w1_s <= s_1;
 
             wire [PW-1:0] j_p = {1'b0, j};  // slot number as a position-wide value
             wire [XW-1:0] o_j;              // the result's slot and its parity (position 2j - odd)
@@ -336,10 +336,8 @@ module chain_stream #(
             reg [DW-1:0]  wr_pos_q, wr2_pos_q;
             genvar k;
             if (RULE == 0) begin : g_centred
-                reg  [NB-1:0] w0_q, w0_s;
-                wire [NB-1:0] p_0 = at_last_even ? nb_after : arr0_all[u*NB +: NB];  // 2j
-                always @(posedge clk) if (slot) w0_q <= p_0;
-                always @(posedge clk) w0_s <= w0_q;
+                reg  [NB-1:0] w0_s;
+                always @(posedge clk) if (slot_s) w0_s <= s_0;
                 wire [NB-1:0] s_m2 = w0_s;                                         // 2j-2
                 // the node at p = 2j (its colour is position 0's) or p = 2j-1, and its neighbours
                 // (valid in the slot's cycle; the rest a cycle later, from the copies)
