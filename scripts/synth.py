@@ -108,7 +108,9 @@ BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
 MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
-# Seeds of the pipelined builds' place and route: one (a run of the WebAssembly nextpnr-ecp5
+# Seeds of the pipelined builds' place and route: three for the largest placed build (the
+# Q10.8 4x256), whose median is the clock the CPU comparison uses (one seed's fmax moves by
+# several MHz with nothing changed); one for the others (a run of the WebAssembly nextpnr-ecp5
 # on the 4x5 pipelined build takes an hour or more, its router congested by eight pipes in a
 # small body; the 1x256 about 7 minutes; the 4x256 some hours, most of it placing a design that
 # fills three quarters of the device). The 4x5, the 1x256, 2x256 and 4x256 and the cloth
@@ -116,7 +118,7 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # 8x8 and the 16x16 (more multipliers than the device has) get generic cells only, and the
 # report gives the multipliers they would need.
 PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe_s1": [1], "1x256_pipe_s4": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [1], "8x128_pair_pipe": [],
-              "cloth_pipe": [1], "q10_1x256_pipe": [1], "q10_4x256_pipe": [1],
+              "cloth_pipe": [1], "q10_1x256_pipe": [1], "q10_4x256_pipe": [1, 2, 3],
               "q10_8x256_pipe": [1], "q10_12x256_pair_pipe": []}
 # Builds routed by nextpnr's router2 instead of its default router1 (a device filled to three
 # quarters). The 4x5 is back on router1: router2 stalled on it twice, at about 19,000 overused
