@@ -177,14 +177,12 @@ module chain_stream #(
     // than a row (a slot-bound unit at a short pipe)
     wire [TW+IW-1:0] t_wide = {{IW{1'b0}}, t};
     /* verilator lint_on UNUSEDSIGNAL */
+    // next cycle's reading and jr (the units' row registers take them too, below)
+    wire          read_d = !reset && reading_next;
+    wire [IW-1:0] jr_d   = read_d ? t_wide[IW-1:0] : {IW{1'b0}};
     always @(posedge clk) begin
-        if (reset) begin
-            reading <= 1'b0;
-            jr      <= {IW{1'b0}};
-        end else begin
-            reading <= reading_next;
-            jr      <= reading_next ? t_wide[IW-1:0] : {IW{1'b0}};
-        end
+        reading <= read_d;
+        jr      <= jr_d;
     end
 
     always @(posedge clk) begin
@@ -250,25 +248,38 @@ module chain_stream #(
             localparam [0:0] DOWN = u % 2 == 1;
             wire [NB-1:0] own_e = {pair_pin_e_all[u], pair_prev_e_all[u*DW +: DW], pair_pos_e_all[u*DW +: DW]};
             wire [NB-1:0] own_o = {pair_pin_o_all[u], pair_prev_o_all[u*DW +: DW], pair_pos_o_all[u*DW +: DW]};
+            // The unit's rows: its own registers, formed from next cycle's read (jr_d) and kept
+            // apart from every other unit's (keep: Yosys would merge equal flip-flops), so that
+            // the row reaches the unit's memories and its pinned flags' K-way select from a
+            // flip-flop beside them, not from one register fanned out across the device.
+            reg [IW-1:0] row_e_q, row_o_q;
+            assign pair_row_e_all[u*IW +: IW] = row_e_q;
+            assign pair_row_o_all[u*IW +: IW] = row_o_q;
             if (!DOWN) begin : g_up          // positions 2j, 2j+1: nodes 2j (even), 2j+1 (odd), row j
-                assign pair_row_e_all[u*IW +: IW] = jr;
-                assign pair_row_o_all[u*IW +: IW] = jr;
+                (* keep *) always @(posedge clk) begin
+                    row_e_q <= jr_d;
+                    row_o_q <= jr_d;
+                end
                 assign arr0_all[u*NB +: NB] = own_e;
                 assign arr1_all[u*NB +: NB] = own_o;
             end else if (K_EVEN) begin : g_down_even  // nodes K-1-2j (odd), K-2-2j (even), row K/2-1-j
                 localparam integer TOP_I = K / 2 - 1;
                 localparam [IW-1:0] TOP = TOP_I[IW-1:0];
-                wire [IW-1:0] row = reading ? TOP - jr : {IW{1'b0}};
-                assign pair_row_e_all[u*IW +: IW] = row;
-                assign pair_row_o_all[u*IW +: IW] = row;
+                wire [IW-1:0] row_d = read_d ? TOP - jr_d : {IW{1'b0}};
+                (* keep *) always @(posedge clk) begin
+                    row_e_q <= row_d;
+                    row_o_q <= row_d;
+                end
                 assign arr0_all[u*NB +: NB] = own_o;
                 assign arr1_all[u*NB +: NB] = own_e;
             end else begin : g_down_odd      // nodes K-1-2j (even, row (K-1)/2-j), K-2-2j (odd, row (K-3)/2-j)
                 localparam integer TOP_E_I = (K - 1) / 2, TOP_O_I = K >= 3 ? (K - 3) / 2 : 0;
                 localparam [IW-1:0] TOP_E = TOP_E_I[IW-1:0], TOP_O = TOP_O_I[IW-1:0];
                 // the last pair has no odd node (K-2-2j = -1): row 0, its word unused
-                assign pair_row_e_all[u*IW +: IW] = reading ? TOP_E - jr : {IW{1'b0}};
-                assign pair_row_o_all[u*IW +: IW] = reading && K >= 3 && jr <= TOP_O ? TOP_O - jr : {IW{1'b0}};
+                (* keep *) always @(posedge clk) begin
+                    row_e_q <= read_d ? TOP_E - jr_d : {IW{1'b0}};
+                    row_o_q <= read_d && K >= 3 && jr_d <= TOP_O ? TOP_O - jr_d : {IW{1'b0}};
+                end
                 assign arr0_all[u*NB +: NB] = own_e;
                 assign arr1_all[u*NB +: NB] = own_o;
             end
