@@ -42,7 +42,7 @@ module frame_ctrl #(
     input  wire             mouse_down,
     input  wire [DIM*W-1:0] start_pos,     // START, STEP, PREV: the init walk's layout
     input  wire [DIM*W-1:0] step_pos,
-    input  wire [DIM*W-1:0] prev_off,
+    input  wire [DIM*W-1:0] prev_off_next,  // the offset's value in the next cycle
     input  wire [DIM*W-1:0] box,           // BOX: the mouse's in-touch half-widths
 
     input  wire             fv,            // every unit finished its pass
@@ -110,14 +110,24 @@ module frame_ctrl #(
             reg             node0_q;   // init_node0: addr_q's node bits are 0
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
-            wire [DIM*W-1:0] pos_next;
+            // init_prev = pos_q + the offset, registered: formed a cycle ahead from both
+            // registers' next values, so that the sum reaches every unit's memory from a
+            // flip-flop (an offset written during the walk acts from the next cycle, as before)
+            reg [DIM*W-1:0] prev_q;
+            wire [DIM*W-1:0] pos_next, pos_d, prev_d;
+            assign pos_d = reset ? {(DIM*W){1'b0}} : phase == PH_INIT ? pos_next : start_pos;
             for (k = 0; k < DIM; k = k + 1) begin : g_lane
                 /* verilator lint_off PINCONNECTEMPTY */
                 // saturation flags are not needed: the saturated value is the result
                 fx_add #(.W(W), .SUB(0)) u_next (.sub(1'b0), .a(pos_q[k*W +: W]), .b(step_pos[k*W +: W]), .y(pos_next[k*W +: W]), .sat());
-                fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_q[k*W +: W]), .b(prev_off[k*W +: W]), .y(init_prev[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_d[k*W +: W]), .b(prev_off_next[k*W +: W]), .y(prev_d[k*W +: W]), .sat());
                 /* verilator lint_on PINCONNECTEMPTY */
             end
+            always @(posedge clk) begin
+                pos_q  <= pos_d;   // read only in the walk: outside it, the walk's start
+                prev_q <= prev_d;
+            end
+            assign init_prev = prev_q;
             // The next address, also out: node_unit looks up the next node's pinned flag a
             // cycle ahead, so that the lookup is not on the memory's write path. after_q holds
             // the address after addr_q, so that no incrementer sits before that lookup.
@@ -138,16 +148,12 @@ module frame_ctrl #(
                     ahead_q <= ADDR_ONE;
                     node0_q <= 1'b1;
                     count_q <= {CW{1'b0}};
-                    pos_q   <= {(DIM*W){1'b0}};
                 end else if (phase == PH_INIT) begin
                     addr_q  <= walk_end ? ADDR_ZERO : after_q;
                     after_q <= walk_end ? ADDR_ONE : next_node(after_q);
                     ahead_q <= walk_end ? ADDR_ONE : next_node(after_q);
                     node0_q <= walk_end || after_q[IW-1:0] == {IW{1'b0}};
                     count_q <= walk_end ? {CW{1'b0}} : count_q + 1'b1;
-                    pos_q   <= pos_next;
-                end else begin
-                    pos_q   <= start_pos;   // read only in the walk: the walk starts here
                 end
             end
             assign walk_end  = phase == PH_INIT && count_q == N_LAST;
@@ -160,7 +166,7 @@ module frame_ctrl #(
             assign init_node0     = 1'b0;
             assign init_pos  = {(DIM*W){1'b0}};
             assign init_prev = {(DIM*W){1'b0}};
-            wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};
+            wire unused_walk = &{1'b0, start_pos, step_pos, prev_off_next};
         end
     endgenerate
 

@@ -28,7 +28,8 @@
 // middle of frames; the run then writes the setup again and starts the scene over,
 // and the RTL and the model must go on agreeing. --late-pins writes some of a chain's
 // PINs during the init walk (in the cycle before the walk writes the node, or in that
-// cycle): the at-rest write of a node pinned the cycle before must see the pin.
+// cycle): the at-rest write of a node pinned the cycle before must see the pin; and writes
+// PREV_X again, changed, in one cycle of the walk: the nodes written after it take it.
 //
 // --expect-fault needs a build from a copy of the RTL with that fault planted
 // (tb/faults.py): it passes only if the first mismatch is at the cycle the model
@@ -390,6 +391,16 @@ bool Run::setup(cyc_inputs &in) {
         sim_fx_free(&tmp);
     }
     std::vector<std::pair<int, long>> late_pins; // node, the walk cycle its PIN is written in
+    // --late-pins also writes PREV_X again in a drawn cycle of a chain's walk, with its low
+    // bits changed: the nodes the walk writes from the next cycle on take the new offset
+    long prev_cycle = -1;
+    uint32_t prev_data = 0;
+    for (const hw_write &w : writes) {
+        if (o_.late_pins && !hp_.graph && w.addr == STRAND_REG_PREV_X && sc_.n_nodes > 1) {
+            prev_cycle = (long)rng_.below((uint32_t)sc_.n_nodes - 1);
+            prev_data = (w.data ^ 3u) & mask_;
+        }
+    }
     for (const hw_write &w : writes) {
         if (o_.late_pins && !hp_.graph && w.addr == STRAND_REG_PIN) {
             int node = -1;
@@ -430,6 +441,11 @@ bool Run::setup(cyc_inputs &in) {
                     late_pins.erase(late_pins.begin() + (long)p);
                     break;
                 }
+            if (!in.cfg_we && walk_cycle == prev_cycle) {  // a pin took the cycle: none
+                in.cfg_we = true;
+                in.cfg_addr = STRAND_REG_PREV_X;
+                in.cfg_data = prev_data;
+            }
             walk_cycle++;
         }
         if (!cycle(in)) return false;
