@@ -194,6 +194,7 @@ static void reset_all(cyc_model *c)
     for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
     c->s.ks = c->s.kd = c->s.ground = c->s.friction = 0;
     memset(c->prev_off, 0, sizeof c->prev_off);
+    memset(c->init_prev, 0, sizeof c->init_prev);
     c->ground_pass = false;
     memset(&c->pair, 0, sizeof c->pair);   /* PQ_IDLE, counters 0 */
     memset(&c->force, 0, sizeof c->force);
@@ -260,6 +261,13 @@ static void lane_write_port(cyc_model *c, bool *written, int u, int port, int id
 static void lane_write(cyc_model *c, bool *written, int u, int idx, int node) { lane_write_port(c, written, u, 0, idx, node); }
 
 /* A node index from a {unit, node} address (the address decoders of strand_core), or -1. */
+/* frame_ctrl: the walk's previous position, registered with the walk's position (init_pos,
+ * just updated) and the PREV register as it stands before this edge's write. */
+static void walk_prev(cyc_model *c)
+{
+    for (int a = 0; a < 3; a++) c->init_prev[a] = fx_add(&c->s.fmt, c->init_pos[a], c->prev_off[a]);
+}
+
 static int node_of(const cyc_model *c, uint32_t addr)
 {
     const hw_params *hp = &c->hp;
@@ -630,7 +638,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         for (int a = 0; a < hp->dim; a++) {
             c->s.pos[node][a] = c->init_pos[a];
             /* node_unit: a pinned node starts at rest, a free one PREV away */
-            c->s.prev[node][a] = c->sc.pinned[node] ? c->init_pos[a] : fx_add(f, c->init_pos[a], c->prev_off[a]);
+            c->s.prev[node][a] = c->sc.pinned[node] ? c->init_pos[a] : c->init_prev[a];
         }
         lane_write(c, written, c->init_u, c->init_n, node);
     }
@@ -841,6 +849,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->phase = PH_INIT;
             c->init_u = c->init_n = c->init_count = 0;
             for (int a = 0; a < 3; a++) c->init_pos[a] = a < hp->dim ? c->start[a] : 0;
+            walk_prev(c);
         } else if (in->step) {
             c->phase = hp->grab ? PH_GRAB : hp->en_springs ? PH_FORCE : PH_VERLET;
             c->scan_i = 0;
@@ -855,6 +864,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->init_pos[0] = fx_add(f, c->init_pos[0], c->step[0]);
         c->init_pos[1] = fx_add(f, c->init_pos[1], c->step[1]);
         c->init_pos[2] = fx_add(f, c->init_pos[2], c->step[2]);
+        walk_prev(c);
         if (c->init_n == k - 1) {
             c->init_n = 0;
             c->init_u++;

@@ -42,7 +42,7 @@ module frame_ctrl #(
     input  wire             mouse_down,
     input  wire [DIM*W-1:0] start_pos,     // START, STEP, PREV: the init walk's layout
     input  wire [DIM*W-1:0] step_pos,
-    input  wire [DIM*W-1:0] prev_off_next,  // the offset's value in the next cycle
+    input  wire [DIM*W-1:0] prev_off,
     input  wire [DIM*W-1:0] box,           // BOX: the mouse's in-touch half-widths
 
     input  wire             fv,            // every unit finished its pass
@@ -110,9 +110,11 @@ module frame_ctrl #(
             reg             node0_q;   // init_node0: addr_q's node bits are 0
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
-            // init_prev = pos_q + the offset, registered: formed a cycle ahead from both
-            // registers' next values, so that the sum reaches every unit's memory from a
-            // flip-flop (an offset written during the walk acts from the next cycle, as before)
+            // init_prev: pos_q + the offset, registered (formed a cycle ahead from pos_q's next
+            // value and the offset's register), so that the sum reaches every unit's memory
+            // from a flip-flop, and the register write port's data does not reach this adder.
+            // So a PREV written during the walk acts on the walk a cycle later than a constant
+            // read directly would (the cycle model does the same)
             reg [DIM*W-1:0] prev_q;
             wire [DIM*W-1:0] pos_next, pos_d, prev_d;
             assign pos_d = reset ? {(DIM*W){1'b0}} : phase == PH_INIT ? pos_next : start_pos;
@@ -120,7 +122,7 @@ module frame_ctrl #(
                 /* verilator lint_off PINCONNECTEMPTY */
                 // saturation flags are not needed: the saturated value is the result
                 fx_add #(.W(W), .SUB(0)) u_next (.sub(1'b0), .a(pos_q[k*W +: W]), .b(step_pos[k*W +: W]), .y(pos_next[k*W +: W]), .sat());
-                fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_d[k*W +: W]), .b(prev_off_next[k*W +: W]), .y(prev_d[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_d[k*W +: W]), .b(prev_off[k*W +: W]), .y(prev_d[k*W +: W]), .sat());
                 /* verilator lint_on PINCONNECTEMPTY */
             end
             always @(posedge clk) begin
@@ -166,7 +168,7 @@ module frame_ctrl #(
             assign init_node0     = 1'b0;
             assign init_pos  = {(DIM*W){1'b0}};
             assign init_prev = {(DIM*W){1'b0}};
-            wire unused_walk = &{1'b0, start_pos, step_pos, prev_off_next};
+            wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};
         end
     endgenerate
 

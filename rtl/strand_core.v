@@ -77,7 +77,7 @@ module strand_core #(
     localparam [UW:0] M_COUNT = M[UW:0];
 
     // ---- registers ----
-    wire [DW-1:0]  gdt2, box, start_pos, step_pos, prev_off_next, load_pos, load_prev;
+    wire [DW-1:0]  gdt2, box, start_pos, step_pos, prev_off, load_pos, load_prev;
     wire [W-1:0]   rest_len, impulse, damping, ks, kd, ground, friction, edge_rest;
     wire           cmd_init, pin_we, node_we_any, edge_we_any, irq_ack;
     strand_regfile #(
@@ -85,7 +85,7 @@ module strand_core #(
     ) u_regs (
         .clk(clk), .reset(reset), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
         .gdt2(gdt2), .box(box), .start_pos(start_pos),
-        .step_pos(step_pos), .prev_off_next(prev_off_next), .load_pos(load_pos), .load_prev(load_prev),
+        .step_pos(step_pos), .prev_off(prev_off), .load_pos(load_pos), .load_prev(load_prev),
         .rest_len(rest_len), .impulse(impulse), .damping(damping), .ks(ks), .kd(kd), .ground(ground),
         .friction(friction), .edge_rest(edge_rest),
         .cmd_init(cmd_init), .pin_we(pin_we), .node_we(node_we_any), .edge_we(edge_we_any), .irq_ack(irq_ack));
@@ -111,7 +111,7 @@ module strand_core #(
     ) u_frame (
         .clk(clk), .reset(reset), .step(step), .cmd_init(cmd_init), .irq_ack(irq_ack),
         .mouse(mouse_lanes), .mouse_down(mouse_down),
-        .start_pos(start_pos), .step_pos(step_pos), .prev_off_next(prev_off_next),
+        .start_pos(start_pos), .step_pos(step_pos), .prev_off(prev_off),
         .fv(fv), .seq_done(seq_done), .force_done(force_done), .scan_end(scan_end),
         .phase(phase), .frame_start(frame_start), .verlet_start(verlet_start), .ground_start(ground_start),
         .seq_start(seq_start), .force_start(force_start), .frame_done(frame_done), .irq(irq),

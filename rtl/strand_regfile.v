@@ -32,7 +32,7 @@ module strand_regfile #(
     output wire [DIM*W-1:0] box,        // the mouse's in-touch half-widths
     output wire [DIM*W-1:0] start_pos,  // the init walk: node 0, the step, the previous-position offset
     output wire [DIM*W-1:0] step_pos,
-    output wire [DIM*W-1:0] prev_off_next,  // its value in the next cycle (the walk adds it a cycle ahead)
+    output wire [DIM*W-1:0] prev_off,
     output wire [DIM*W-1:0] load_pos,   // a NODE write's position and previous position
     output wire [DIM*W-1:0] load_prev,
     output wire [W-1:0]     rest_len,
@@ -136,11 +136,7 @@ module strand_regfile #(
             assign box[k*W +: W]       = USE_BOX ? box_q : {W{1'b0}};
             assign start_pos[k*W +: W] = USE_LAYOUT ? start_q : {W{1'b0}};
             assign step_pos[k*W +: W]  = USE_LAYOUT ? step_q : {W{1'b0}};
-            // the offset as the next cycle will hold it (this cycle's write taken): the init walk
-            // registers pos + offset a cycle ahead, so that the sum reaches the units' memories
-            // from a flip-flop
-            wire [W-1:0] prev_d = reset ? {W{1'b0}} : cfg_we && cfg_addr == A_PREV[k*AB +: AB] ? cfg_data : prev_q;
-            assign prev_off_next[k*W +: W] = USE_LAYOUT ? prev_d : {W{1'b0}};
+            assign prev_off[k*W +: W]  = USE_LAYOUT ? prev_q : {W{1'b0}};
             assign load_pos[k*W +: W]  = USE_LOAD ? load_q : {W{1'b0}};
             assign load_prev[k*W +: W] = USE_LOAD ? loadp_q : {W{1'b0}};
         end
