@@ -29,7 +29,8 @@
 // and the RTL and the model must go on agreeing. --late-pins writes some of a chain's
 // PINs during the init walk (in the cycle before the walk writes the node, or in that
 // cycle): the at-rest write of a node pinned the cycle before must see the pin; and writes
-// PREV_X again, changed, in one cycle of the walk: the nodes written after it take it.
+// PREV_X again, changed, in one cycle of the walk: the nodes written from the second cycle
+// after it take it (the walk registers position + PREV a cycle ahead).
 //
 // --expect-fault needs a build from a copy of the RTL with that fault planted
 // (tb/faults.py): it passes only if the first mismatch is at the cycle the model
@@ -392,7 +393,7 @@ bool Run::setup(cyc_inputs &in) {
     }
     std::vector<std::pair<int, long>> late_pins; // node, the walk cycle its PIN is written in
     // --late-pins also writes PREV_X again in a drawn cycle of a chain's walk, with its low
-    // bits changed: the nodes the walk writes from the next cycle on take the new offset
+    // bits changed: the nodes the walk writes from the second cycle after it take the new offset
     long prev_cycle = -1;
     uint32_t prev_data = 0;
     for (const hw_write &w : writes) {
