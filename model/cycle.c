@@ -260,7 +260,6 @@ static void lane_write_port(cyc_model *c, bool *written, int u, int port, int id
 }
 static void lane_write(cyc_model *c, bool *written, int u, int idx, int node) { lane_write_port(c, written, u, 0, idx, node); }
 
-/* A node index from a {unit, node} address (the address decoders of strand_core), or -1. */
 /* frame_ctrl: the walk's previous position, registered with the walk's position (init_pos,
  * just updated) and the PREV register as it stands before this edge's write. */
 static void walk_prev(cyc_model *c)
@@ -268,6 +267,7 @@ static void walk_prev(cyc_model *c)
     for (int a = 0; a < 3; a++) c->init_prev[a] = fx_add(&c->s.fmt, c->init_pos[a], c->prev_off[a]);
 }
 
+/* A node index from a {unit, node} address (the address decoders of strand_core), or -1. */
 static int node_of(const cyc_model *c, uint32_t addr)
 {
     const hw_params *hp = &c->hp;
