@@ -159,11 +159,22 @@ module chain_stream #(
     wire [TW+XW-1:0] t_minus_2_wide = {{XW{1'b0}}, t_minus_2};
     /* verilator lint_on UNUSEDSIGNAL */
     wire [XW-1:0] j  = t_minus_2_wide[XW-1:0];
-    /* verilator lint_off UNUSEDSIGNAL */
-    wire [TW-1:0]    t_next_minus_2      = t_next - T_TWO;
-    wire [TW+XW-1:0] t_next_minus_2_wide = {{XW{1'b0}}, t_next_minus_2};
-    /* verilator lint_on UNUSEDSIGNAL */
-    wire [XW-1:0] j_next = t_next_minus_2_wide[XW-1:0];   // next cycle's j
+    // A slot's flags, for the sweep counter at tv: {issued (2 <= tv <= NS + 1), and where slot
+    // j = tv - 2 stands: j = 0, position 2j = K, position 2j+1 = K}
+    function [3:0] slot_flags(input [TW-1:0] tv);
+        /* verilator lint_off UNUSEDSIGNAL */
+        reg [TW+XW-1:0] j_wide;   // j as XW bits, zero-extended first as j is (below): the low bits are used
+        /* verilator lint_on UNUSEDSIGNAL */
+        begin
+            j_wide     = {{XW{1'b0}}, tv - T_TWO};
+            slot_flags = {tv >= T_TWO && tv <= T_NS1, j_wide[XW-1:0] == {XW{1'b0}},
+                          K_EVEN && j_wide[XW-1:0] == J_HALF, !K_EVEN && j_wide[XW-1:0] == J_LAST_ODD};
+        end
+    endfunction
+    // next cycle's flags, from t_next's three cases rather than from t_next itself: so the
+    // compares run on t beside the choice of t_next, not after it
+    wire [3:0] flags_next = reset || start_now || sweep_end ? slot_flags({TW{1'b0}})
+                          : running ? slot_flags(t + 1'b1) : slot_flags(t);
     // the slots issued: the count restarts at the sweep's first slot, so that it reaches NS
     // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 2), and FEC
     // stays high until the next sweep's first slot
@@ -214,15 +225,15 @@ module chain_stream #(
     assign nidx = jr;
     assign fec  = counter == SLOTS;
 
-    // where slot j stands at the stream's ends: registered from next cycle's j (above)
+    // where slot j stands at the stream's ends: registered from next cycle's flags (above)
     reg at_first;       // j = 0
     reg at_last_even;   // position 2j is K: no own node there
     reg at_last_odd;    // position 2j+1 is K
     always @(posedge clk) begin
-        slot         <= running_next && t_next >= T_TWO && t_next <= T_NS1;
-        at_first     <= j_next == {XW{1'b0}};
-        at_last_even <= K_EVEN && j_next == J_HALF;
-        at_last_odd  <= !K_EVEN && j_next == J_LAST_ODD;
+        slot         <= running_next && flags_next[3];
+        at_first     <= flags_next[2];
+        at_last_even <= flags_next[1];
+        at_last_odd  <= flags_next[0];
     end
 
     // The pipes' first stage is here (their IN_REG = 0): a slot's words are registered as

@@ -117,7 +117,15 @@ module frame_ctrl #(
             // read directly would (the cycle model does the same)
             reg [DIM*W-1:0] prev_q;
             wire [DIM*W-1:0] pos_next, pos_d, prev_d;
-            assign pos_d = reset ? {(DIM*W){1'b0}} : phase == PH_INIT ? pos_next : start_pos;
+            // walking_q: phase == PH_INIT, a copy of the walk's own (the walk enters INIT only
+            // from IDLE, by walk, and leaves it only at walk_end), so that the phase register,
+            // placed by the frame's logic, is not on the walk's paths (into the adder below)
+            (* keep *) reg walking_q;
+            always @(posedge clk)
+                if (reset) walking_q <= 1'b0;
+                else if (phase == PH_IDLE && walk) walking_q <= 1'b1;
+                else if (walk_end) walking_q <= 1'b0;
+            assign pos_d = reset ? {(DIM*W){1'b0}} : walking_q ? pos_next : start_pos;
             for (k = 0; k < DIM; k = k + 1) begin : g_lane
                 /* verilator lint_off PINCONNECTEMPTY */
                 // saturation flags are not needed: the saturated value is the result
@@ -150,7 +158,7 @@ module frame_ctrl #(
                     ahead_q <= ADDR_ONE;
                     node0_q <= 1'b1;
                     count_q <= {CW{1'b0}};
-                end else if (phase == PH_INIT) begin
+                end else if (walking_q) begin
                     addr_q  <= walk_end ? ADDR_ZERO : after_q;
                     after_q <= walk_end ? ADDR_ONE : next_node(after_q);
                     ahead_q <= walk_end ? ADDR_ONE : next_node(after_q);
@@ -158,7 +166,7 @@ module frame_ctrl #(
                     count_q <= walk_end ? {CW{1'b0}} : count_q + 1'b1;
                 end
             end
-            assign walk_end  = phase == PH_INIT && count_q == N_LAST;
+            assign walk_end  = walking_q && count_q == N_LAST;
             assign init_addr = addr_q;
             assign init_pos  = pos_q;
         end else begin : g_no_walk

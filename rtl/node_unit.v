@@ -461,15 +461,50 @@ module node_unit #(
     // bank select, this mask and the core's selection over the units come after. (The word
     // registered after the bank select instead put the RAM's output, a long route and the
     // select on one path, which set the clock of the largest build.) ----
-    reg b_ok, b_ok_r;  // the node was written, when b_idx was given; a cycle later
-    always @(posedge clk)
-        if (reset) begin
-            b_ok   <= 1'b0;
-            b_ok_r <= 1'b0;
-        end else begin
-            b_ok   <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
-            b_ok_r <= b_ok;
+    // The written flag of b_idx is selected in two steps, one per cycle (the word takes two
+    // cycles too): first, in each group of 2^B_LO flags, the flag at b_idx's low bits; then
+    // the group at its high bits. The K-way select in one cycle, behind the host's read
+    // address and its route to every unit, set the clock of the largest build. Both steps
+    // read the flags as they stand when b_idx is given, as before.
+    reg b_ok_r;  // the node was written, when b_idx was given (two cycles ago)
+    generate
+        if (IW >= 4) begin : g_b_ok_split
+            localparam integer B_LO = IW / 2;        // low bits: the first step's select
+            localparam integer B_HI = IW - B_LO;     // high bits: the group, the second's
+            localparam integer PADDED = 1 << IW;
+            /* verilator lint_off WIDTH */
+            wire [PADDED-1:0] written_all = written_q;   // the flags past K read as 0
+            /* verilator lint_on WIDTH */
+            reg  [(1 << B_HI)-1:0] group_q;               // per group: the flag at the low bits
+            reg  [B_HI-1:0]        b_hi_q;
+            reg                    b_in_q;                // b_idx < K
+            genvar g;
+            for (g = 0; g < (1 << B_HI); g = g + 1) begin : g_group
+                always @(posedge clk)
+                    group_q[g] <= written_all[g * (1 << B_LO) + b_idx[B_LO-1:0]];
+            end
+            always @(posedge clk) begin
+                b_hi_q <= b_idx[IW-1:B_LO];
+                if (reset) begin
+                    b_in_q <= 1'b0;
+                    b_ok_r <= 1'b0;
+                end else begin
+                    b_in_q <= {1'b0, b_idx} < K_COUNT;
+                    b_ok_r <= b_in_q && group_q[b_hi_q];
+                end
+            end
+        end else begin : g_b_ok_one
+            reg b_ok;  // a cycle after b_idx
+            always @(posedge clk)
+                if (reset) begin
+                    b_ok   <= 1'b0;
+                    b_ok_r <= 1'b0;
+                end else begin
+                    b_ok   <= {1'b0, b_idx} < K_COUNT && written_q[b_idx];
+                    b_ok_r <= b_ok;
+                end
         end
+    endgenerate
     assign b_pos = b_ok_r ? b_pos_raw : {(DIM*W){1'b0}};
 
     // ---- the write-back lanes (DEBUG) ----
