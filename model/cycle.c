@@ -195,6 +195,8 @@ static void reset_all(cyc_model *c)
     c->s.ks = c->s.kd = c->s.ground = c->s.friction = 0;
     memset(c->prev_off, 0, sizeof c->prev_off);
     memset(c->init_prev, 0, sizeof c->init_prev);
+    memset(c->init_ahead, 0, sizeof c->init_ahead);
+    c->pin_pend = -1;
     c->ground_pass = false;
     memset(&c->pair, 0, sizeof c->pair);   /* PQ_IDLE, counters 0 */
     memset(&c->force, 0, sizeof c->force);
@@ -260,12 +262,19 @@ static void lane_write_port(cyc_model *c, bool *written, int u, int port, int id
 }
 static void lane_write(cyc_model *c, bool *written, int u, int idx, int node) { lane_write_port(c, written, u, 0, idx, node); }
 
-/* frame_ctrl: the walk's previous position, registered with the walk's position (init_pos,
- * just updated) and the PREV register as it stands before this edge's write. */
-static void walk_prev(cyc_model *c)
+/* frame_ctrl: the walk's next and previous positions, registered with the walk's position
+ * (init_pos, just updated) and the STEP and PREV registers as they stand before this edge's
+ * write. */
+static void walk_ahead(cyc_model *c)
 {
-    for (int a = 0; a < 3; a++) c->init_prev[a] = fx_add(&c->s.fmt, c->init_pos[a], c->prev_off[a]);
+    for (int a = 0; a < 3; a++) {
+        c->init_ahead[a] = fx_add(&c->s.fmt, c->init_pos[a], c->step[a]);
+        c->init_prev[a] = fx_add(&c->s.fmt, c->init_pos[a], c->prev_off[a]);
+    }
 }
+
+/* node_unit: the flags, as they stand next cycle (with the PIN on its way through pin_pend_q). */
+static bool pinned_next(const cyc_model *c, int node) { return c->sc.pinned[node] || c->pin_pend == node; }
 
 /* A node index from a {unit, node} address (the address decoders of strand_core), or -1. */
 static int node_of(const cyc_model *c, uint32_t addr)
@@ -648,7 +657,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         if (node >= 0) {
             for (int a = 0; a < hp->dim; a++) {
                 c->s.pos[node][a] = c->load[0][a];
-                c->s.prev[node][a] = c->sc.pinned[node] ? c->load[0][a] : c->load[1][a];
+                c->s.prev[node][a] = pinned_next(c, node) ? c->load[0][a] : c->load[1][a];
             }
             lane_write(c, written, node / k, node % k, node);
         }
@@ -849,7 +858,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->phase = PH_INIT;
             c->init_u = c->init_n = c->init_count = 0;
             for (int a = 0; a < 3; a++) c->init_pos[a] = a < hp->dim ? c->start[a] : 0;
-            walk_prev(c);
+            walk_ahead(c);
         } else if (in->step) {
             c->phase = hp->grab ? PH_GRAB : hp->en_springs ? PH_FORCE : PH_VERLET;
             c->scan_i = 0;
@@ -861,10 +870,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         }
         break;
     case PH_INIT:
-        c->init_pos[0] = fx_add(f, c->init_pos[0], c->step[0]);
-        c->init_pos[1] = fx_add(f, c->init_pos[1], c->step[1]);
-        c->init_pos[2] = fx_add(f, c->init_pos[2], c->step[2]);
-        walk_prev(c);
+        for (int a = 0; a < 3; a++) c->init_pos[a] = c->init_ahead[a];
+        walk_ahead(c);
         if (c->init_n == k - 1) {
             c->init_n = 0;
             c->init_u++;
@@ -905,6 +912,9 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
 
     /* Register writes (strand_regfile and the units' pin flags); a frame ending sets irq
        after IRQ_ACK clears it (frame_ctrl). */
+    /* node_unit: last cycle's PIN reaches the flags at this edge; this cycle's is on its way */
+    if (c->pin_pend >= 0) c->sc.pinned[c->pin_pend] = true;
+    c->pin_pend = -1;
     if (in->cfg_we) {
         fx_t v = from_word(f, in->cfg_data);
         switch (in->cfg_addr) {
@@ -947,7 +957,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         case STRAND_REG_STEP_Y: c->step[1] = v; break;
         case STRAND_REG_PIN: {
             uint32_t u = in->cfg_data >> hp->iw & ((1u << hp->uw) - 1), nn = in->cfg_data & ((1u << hp->iw) - 1);
-            if (u < (uint32_t)m && nn < (uint32_t)k) c->sc.pinned[u * k + (int)nn] = true;
+            if (u < (uint32_t)m && nn < (uint32_t)k) c->pin_pend = (int)(u * k + nn);
             break;
         }
         default: break;

@@ -83,6 +83,8 @@ typedef struct {
     int init_u, init_n, init_count;
     fx_t init_pos[3], start[3], step[3], prev_off[3];
     fx_t init_prev[3]; /* frame_ctrl prev_q: init_pos + prev_off, registered a cycle ahead */
+    fx_t init_ahead[3]; /* frame_ctrl pos_ahead_q: init_pos + step, registered a cycle ahead */
+    int pin_pend;       /* node_unit pin_pend_q: the node a PIN of the last cycle pins at this edge, or -1 */
     fx_t load[2][3];   /* LOAD_X..Z, LOAD_PX..PZ */
     fx_t edge_rest;    /* EDGE_REST */
     uint32_t rd_u_q, rd_u_q2; /* strand_core: the read port's unit, one and two cycles after rd_addr */

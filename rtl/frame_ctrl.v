@@ -110,32 +110,35 @@ module frame_ctrl #(
             reg             node0_q;   // init_node0: addr_q's node bits are 0
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
-            // init_prev: pos_q + the offset, registered (formed a cycle ahead from pos_q's next
-            // value and the offset's register), so that the sum reaches every unit's memory
-            // from a flip-flop, and the register write port's data does not reach this adder.
-            // So a PREV written during the walk acts on the walk a cycle later than a constant
-            // read directly would (the cycle model does the same)
-            reg [DIM*W-1:0] prev_q;
-            wire [DIM*W-1:0] pos_next, pos_d, prev_d;
+            // The walk's next position and its previous position are formed a cycle ahead and
+            // registered: pos_ahead_q is the position after pos_d (pos_d + STEP), prev_q is
+            // pos_d + PREV (init_prev), each with the register as it stands. So each adder
+            // starts from flip-flops, neither follows the other on one path, the sum reaches
+            // every unit's memory from a flip-flop, and the register write port's data reaches
+            // neither adder. A STEP or PREV written during the walk acts on it a cycle later
+            // than a constant read directly would (the cycle model does the same)
+            reg [DIM*W-1:0] pos_ahead_q, prev_q;
+            wire [DIM*W-1:0] ahead_d, pos_d, prev_d;
             // walking_q: phase == PH_INIT, a copy of the walk's own (the walk enters INIT only
             // from IDLE, by walk, and leaves it only at walk_end), so that the phase register,
-            // placed by the frame's logic, is not on the walk's paths (into the adder below)
+            // placed by the frame's logic, is not on the walk's paths (into the adders below)
             (* keep *) reg walking_q;
             always @(posedge clk)
                 if (reset) walking_q <= 1'b0;
                 else if (phase == PH_IDLE && walk) walking_q <= 1'b1;
                 else if (walk_end) walking_q <= 1'b0;
-            assign pos_d = reset ? {(DIM*W){1'b0}} : walking_q ? pos_next : start_pos;
+            assign pos_d = reset ? {(DIM*W){1'b0}} : walking_q ? pos_ahead_q : start_pos;
             for (k = 0; k < DIM; k = k + 1) begin : g_lane
                 /* verilator lint_off PINCONNECTEMPTY */
                 // saturation flags are not needed: the saturated value is the result
-                fx_add #(.W(W), .SUB(0)) u_next (.sub(1'b0), .a(pos_q[k*W +: W]), .b(step_pos[k*W +: W]), .y(pos_next[k*W +: W]), .sat());
+                fx_add #(.W(W), .SUB(0)) u_next (.sub(1'b0), .a(pos_d[k*W +: W]), .b(step_pos[k*W +: W]), .y(ahead_d[k*W +: W]), .sat());
                 fx_add #(.W(W), .SUB(0)) u_prev (.sub(1'b0), .a(pos_d[k*W +: W]), .b(prev_off[k*W +: W]), .y(prev_d[k*W +: W]), .sat());
                 /* verilator lint_on PINCONNECTEMPTY */
             end
             always @(posedge clk) begin
-                pos_q  <= pos_d;   // read only in the walk: outside it, the walk's start
-                prev_q <= prev_d;
+                pos_q       <= pos_d;   // read only in the walk: outside it, the walk's start
+                pos_ahead_q <= ahead_d;
+                prev_q      <= prev_d;
             end
             assign init_prev = prev_q;
             // The next address, also out: node_unit looks up the next node's pinned flag a

@@ -89,7 +89,7 @@ module node_unit #(
     input  wire [IW-1:0]    rest_idx,     // the node an at-rest write's pinned flag is looked up for: a
                                           //   graph's NODE load's (now); a chain's init walk's next node
     input  wire             rest_node0,   // a chain's init walk: the write is to node 0 (its flag is kept apart)
-    input  wire             pin_en,       // pin node pin_idx
+    input  wire             pin_en,       // pin node pin_idx (the flag is set from the second cycle after)
     input  wire [IW-1:0]    pin_idx,
 
     // PAIR (a chain's pipelined constraint pass): a pair read instead of port A, node
@@ -365,18 +365,28 @@ module node_unit #(
     wire [IW-1:0]  widx     = pass_w ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
     wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
     wire           wprev    = pass_w || w_at_rest;
+    // A PIN reaches the flags through a register (pin_pend_q): the bus's address decode then
+    // ends at a flip-flop of the unit, not in the walk's flag lookup across the device. So
+    // the flags hold a PIN from the second cycle after its write; pinned_now is what they
+    // will hold next cycle.
+    reg           pin_pend_q;
+    reg [IW-1:0]  pin_pend_idx_q;
+    always @(posedge clk) begin
+        pin_pend_q     <= !reset && pin_en;
+        pin_pend_idx_q <= pin_idx;
+    end
     // A pinned node starts at rest (w_pin is read only when w_at_rest). The lookup, a K-way
     // select over the flags, is kept off the memories' write data: a graph's NODE load
-    // looks up rest_idx (= w_idx then) apart from w_idx's select among the four writers; a
-    // chain's init walk registers the flag of the node it writes next (rest_idx), with a
-    // PIN of that node in the same cycle, which is what pinned_q holds then; and node 0's
-    // flag, likewise, for the write of node 0 (rest_node0), whose lookup cannot come a
-    // cycle ahead: the walk starts at it, and the command that starts it does not reach
-    // rest_idx (frame_ctrl).
+    // looks up rest_idx (= w_idx then) apart from w_idx's select among the four writers,
+    // with the PIN on its way to the flags; a chain's init walk registers the flag of the
+    // node it writes next (rest_idx), as the flags will hold it in that write's cycle
+    // (with the PIN on its way); and node 0's flag, likewise, for the write of node 0
+    // (rest_node0), whose lookup cannot come a cycle ahead: the walk starts at it, and the
+    // command that starts it does not reach rest_idx (frame_ctrl).
     wire           w_pin;
     generate
         if (GRAPH) begin : g_load_pin
-            assign w_pin = {1'b0, rest_idx} < K_COUNT && pinned_q[rest_idx];
+            assign w_pin = {1'b0, rest_idx} < K_COUNT && (pinned_q[rest_idx] || (pin_pend_q && pin_pend_idx_q == rest_idx));
             wire unused_node0 = &{1'b0, rest_node0};
         end else begin : g_walk_pin
             reg next_pin_q, node0_pin_q;
@@ -385,8 +395,8 @@ module node_unit #(
                     next_pin_q  <= 1'b0;
                     node0_pin_q <= 1'b0;
                 end else begin
-                    next_pin_q  <= {1'b0, rest_idx} < K_COUNT && (pinned_q[rest_idx] || (pin_en && pin_idx == rest_idx));
-                    node0_pin_q <= pinned_q[0] || (pin_en && pin_idx == {IW{1'b0}});
+                    next_pin_q  <= {1'b0, rest_idx} < K_COUNT && (pinned_q[rest_idx] || (pin_pend_q && pin_pend_idx_q == rest_idx));
+                    node0_pin_q <= pinned_q[0] || (pin_pend_q && pin_pend_idx_q == {IW{1'b0}});
                 end
             assign w_pin = rest_node0 ? node0_pin_q : next_pin_q;
         end
@@ -446,7 +456,7 @@ module node_unit #(
                     pinned_n  <= 1'b0;
                     written_n <= 1'b0;
                 end else begin
-                    if (pin_en)    pinned_n  <= pinned_n  | (pin_idx == N_ID);
+                    if (pin_pend_q) pinned_n <= pinned_n  | (pin_pend_idx_q == N_ID);
                     if (we || we2)
                         written_n <= written_n | (PAIR != 0 ? (we && widx == N_ID) || (we2 && widx2 == N_ID) : widx == N_ID);
                 end

@@ -27,12 +27,14 @@
 // stimulus (for make bench). --resets N asserts reset at N random cycles in the
 // middle of frames; the run then writes the setup again and starts the scene over,
 // and the RTL and the model must go on agreeing. --late-pins writes some of a chain's
-// PINs during the init walk (in the cycle before the walk writes the node, or in that
-// cycle): the at-rest write of a node pinned the cycle before must see the pin; and writes
-// PREV_X again, changed, in one cycle of the walk: the nodes written from the second cycle
-// after it take it (the walk registers position + PREV a cycle ahead). In half the runs it
-// then walks once more, without a reset (a CMD after a few idle cycles): the walk must have
-// put its registers back for its next start.
+// PINs during the init walk (two cycles before the walk writes the node, the cycle before,
+// or in that cycle): the at-rest write of a node pinned two cycles before must see the pin,
+// and one pinned later must not (a PIN reaches the flags through a register); and writes
+// PREV_X and STEP_X again, changed, each in one cycle of the walk: the walk takes them from
+// the second cycle after (it registers position + STEP and position + PREV a cycle
+// ahead). In half the runs the scene's walk is the second one after the reset: a first
+// walk (of the reset registers) comes before the setup writes, and the walk must have put
+// its registers back for its next start.
 //
 // --expect-fault needs a build from a copy of the RTL with that fault planted
 // (tb/faults.py): it passes only if the first mismatch is at the cycle the model
@@ -386,6 +388,22 @@ bool Run::setup(cyc_inputs &in) {
         if (!cycle(in)) return false;
     }
     in = cyc_inputs{};
+    if (o_.late_pins && !hp_.graph && rng_.below(2)) { // a walk first, from idle after the reset
+        for (uint32_t g = rng_.below(4); g > 0; g--) {
+            noise(in);
+            if (!cycle(in)) return false;
+        }
+        noise(in);
+        in.cfg_we = true;
+        in.cfg_addr = STRAND_REG_CMD;
+        in.cfg_data = ((uint32_t)rng_.next() & mask_) | 1u;
+        if (!cycle(in)) return false;
+        in.cfg_we = false;
+        do {
+            noise(in);
+            if (!cycle(in)) return false;
+        } while (phase() != PH_IDLE);
+    }
     std::vector<hw_write> writes(65536);
     {
         sim_fx tmp;
@@ -394,14 +412,18 @@ bool Run::setup(cyc_inputs &in) {
         sim_fx_free(&tmp);
     }
     std::vector<std::pair<int, long>> late_pins; // node, the walk cycle its PIN is written in
-    // --late-pins also writes PREV_X again in a drawn cycle of a chain's walk, with its low
-    // bits changed: the nodes the walk writes from the second cycle after it take the new offset
-    long prev_cycle = -1;
-    uint32_t prev_data = 0;
+    // --late-pins also writes PREV_X and STEP_X again, each in a drawn cycle of a chain's walk,
+    // with its low bits changed: the walk takes the new value from the second cycle after
+    long prev_cycle = -1, step_cycle = -1;
+    uint32_t prev_data = 0, step_data = 0;
     for (const hw_write &w : writes) {
         if (o_.late_pins && !hp_.graph && w.addr == STRAND_REG_PREV_X && sc_.n_nodes > 1) {
             prev_cycle = (long)rng_.below((uint32_t)sc_.n_nodes - 1);
             prev_data = (w.data ^ 3u) & mask_;
+        }
+        if (o_.late_pins && !hp_.graph && w.addr == STRAND_REG_STEP_X && sc_.n_nodes > 1) {
+            step_cycle = (long)rng_.below((uint32_t)sc_.n_nodes - 1);
+            step_data = (w.data ^ 3u) & mask_;
         }
     }
     for (const hw_write &w : writes) {
@@ -410,7 +432,7 @@ bool Run::setup(cyc_inputs &in) {
             for (int i = 1; i < sc_.n_nodes && node < 0; i++)
                 if (hw_node_addr(&hp_, i) == w.data) node = i;
             if (node > 0 && rng_.below(2)) {
-                late_pins.emplace_back(node, node - (long)rng_.below(2));
+                late_pins.emplace_back(node, std::max(0L, node - (long)rng_.below(3)));
                 continue;
             }
         }
@@ -427,10 +449,10 @@ bool Run::setup(cyc_inputs &in) {
     }
     in.cfg_we = false;
     // The init walk writes node j (in node order) in its j-th cycle. --late-pins: a chain's
-    // PIN of node i > 0 is held back and written in the walk's cycle i - 1 or i (drawn), so
-    // that the walk's at-rest write sees a pin made the cycle before it and one made the
-    // same cycle (which it does not see). The scene then starts differently; model and RTL
-    // alike.
+    // PIN of node i > 0 is held back and written in the walk's cycle i - 2, i - 1 or i
+    // (drawn, from cycle 0), so that the walk's at-rest write meets a pin made two cycles
+    // before it (which it sees), the cycle before and the same cycle (which it does not).
+    // The scene then starts differently; model and RTL alike.
     long walk_cycle = 0;
     do {
         noise(in);
@@ -449,6 +471,11 @@ bool Run::setup(cyc_inputs &in) {
                 in.cfg_addr = STRAND_REG_PREV_X;
                 in.cfg_data = prev_data;
             }
+            if (!in.cfg_we && walk_cycle == step_cycle) {  // likewise
+                in.cfg_we = true;
+                in.cfg_addr = STRAND_REG_STEP_X;
+                in.cfg_data = step_data;
+            }
             walk_cycle++;
         }
         if (!cycle(in)) return false;
@@ -461,22 +488,6 @@ bool Run::setup(cyc_inputs &in) {
         if (!cycle(in)) return false;
     }
     in.cfg_we = false;
-    if (o_.late_pins && !hp_.graph && rng_.below(2)) { // the second walk, from idle
-        for (uint32_t g = rng_.below(4); g > 0; g--) {
-            noise(in);
-            if (!cycle(in)) return false;
-        }
-        noise(in);
-        in.cfg_we = true;
-        in.cfg_addr = STRAND_REG_CMD;
-        in.cfg_data = ((uint32_t)rng_.next() & mask_) | 1u;
-        if (!cycle(in)) return false;
-        in.cfg_we = false;
-        do {
-            noise(in);
-            if (!cycle(in)) return false;
-        } while (phase() != PH_IDLE);
-    }
     return true;
 }
 
