@@ -21,7 +21,7 @@ REGS = [
     ("START_Y", 8, "initial position of node 0, y (Q.F)"),
     ("STEP_X", 9, "initial offset from one node to the next, x (Q.F)"),
     ("STEP_Y", 10, "initial offset from one node to the next, y (Q.F)"),
-    ("PIN", 11, "write a node address {unit, node}: that node is pinned (reset unpins all)"),
+    ("PIN", 11, "write a node address {unit, node}: that node is pinned, from the second cycle after the write (reset unpins all)"),
     ("CMD", 12, "write 1: lay the nodes out from START and STEP, previous positions PREV away (takes N cycles)"),
     ("KS", 13, "spring stiffness, scaled: ks h^2 / m (Q.F)"),
     ("KD", 14, "spring damping, scaled: kd h / m, or kd h^2 / m per step (Q.F)"),
