@@ -22,8 +22,12 @@
  * second cycle after). A graph has no walk
  * (its nodes are loaded one by one): there CMD does nothing and none of it is built.
  *
- * The pointer sampled here (mouse_q) is what every unit forms its in-touch box from
- * (node_unit).
+ * The mouse's in-touch box around the sampled pointer (EN_MOUSE, not GRAB): touch_lo =
+ * mouse_q - BOX and touch_hi = mouse_q + BOX per axis, exact in W+1 bits, registered
+ * from the pointer and the BOX register of the cycle before (so a node's in-touch test
+ * is two comparisons, not a subtraction and then a comparison). The constants are
+ * written between frames, and the first test of a frame comes cycles after its
+ * sample.
  *
  * Phases: 0 IDLE, 1 INIT, 2 VERLET, 3 CONSTRAIN, 4 FORCE, 5 GROUND, 6 GRAB. Every
  * phase takes a number of cycles fixed by the parameters (model/timing.c).
@@ -41,6 +45,7 @@ module frame_ctrl #(
     input  wire [DIM*W-1:0] start_pos,     // START, STEP, PREV: the init walk's layout
     input  wire [DIM*W-1:0] step_pos,
     input  wire [DIM*W-1:0] prev_off,
+    input  wire [DIM*W-1:0] box,           // BOX: the mouse's in-touch half-widths
 
     input  wire             fv,            // every unit finished its pass
     input  wire             seq_done,      // the constraint passes are over
@@ -57,6 +62,8 @@ module frame_ctrl #(
     output reg              irq,           // level: a frame ended since the last IRQ_ACK
     output reg  [DIM*W-1:0] mouse_q,
     output reg              mouse_down_q,
+    output wire [DIM*(W+1)-1:0] touch_lo,  // mouse_q - BOX, per axis (W+1 bits each, exact)
+    output wire [DIM*(W+1)-1:0] touch_hi,  // mouse_q + BOX
 
     output wire             init_we,       // the init walk writes node init_addr now
     output wire [AW-1:0]    init_addr,
@@ -175,6 +182,26 @@ module frame_ctrl #(
             assign init_pos  = {(DIM*W){1'b0}};
             assign init_prev = {(DIM*W){1'b0}};
             wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};
+        end
+    endgenerate
+
+    // ---- the in-touch box around the pointer ----
+    generate
+        if (EN_MOUSE && !GRAB) begin : g_touch_box
+            for (k = 0; k < DIM; k = k + 1) begin : g_axis
+                wire [W:0] m = {mouse_q[k*W + W-1], mouse_q[k*W +: W]}, b = {box[k*W + W-1], box[k*W +: W]};
+                reg  [W:0] lo_q, hi_q;
+                always @(posedge clk) begin
+                    lo_q <= m - b;
+                    hi_q <= m + b;
+                end
+                assign touch_lo[k*(W+1) +: W+1] = lo_q;
+                assign touch_hi[k*(W+1) +: W+1] = hi_q;
+            end
+        end else begin : g_no_touch_box
+            assign touch_lo = {(DIM*(W+1)){1'b0}};
+            assign touch_hi = {(DIM*(W+1)){1'b0}};
+            wire unused_box = &{1'b0, box};
         end
     endgenerate
 

@@ -25,7 +25,7 @@
  *     v = q - qp;  v = v - v*d (EN_DAMPING);  n = q + v;  n = n + g h^2 (EN_GRAVITY);
  *     n = n + qa (EN_SPRINGS)
  * The mouse (EN_MOUSE, not GRAB): `touch` says |mouse - n| < box on this axis
- * (touch_lo < n < touch_hi, the box around the pointer that node_unit forms); the
+ * (touch_lo < n < touch_hi, the box around the pointer that frame_ctrl forms); the
  * impulse itself acts on x only (reference 000, mouse_node()): lane 0 makes
  *     np = in_touch ? (mouse < q ? n + a : n - a) : q
  * The ground pass (EN_GROUND, ground_node()): on the normal axis (AXIS = GROUND_AXIS)
@@ -279,7 +279,7 @@ module node_lane #(
             if (EN_MOUSE && !GRAB) begin : g_mouse
                 // |sat(mouse - n)| < box  <=>  -box < mouse - n < box, exact (a saturated difference
                 // is never inside the box)  <=>  mouse - box < n < mouse + box: two comparisons of
-                // n with the box node_unit forms once a frame, no subtraction per node
+                // n with the box frame_ctrl forms once a frame, no subtraction per node
                 wire [W:0] n_x = {n_c[W-1], n_c};
                 assign touch_c = $signed(touch_lo) < $signed(n_x) && $signed(n_x) < $signed(touch_hi);
                 if (AXIS == 0) begin : g_impulse

@@ -60,7 +60,8 @@ module node_unit #(
 
     // the run-time constants and the pointer, DIM lanes each (lane k at bits k W +: W)
     input  wire [DIM*W-1:0] gdt2,
-    input  wire [DIM*W-1:0] box,          // BOX: the mouse's in-touch half-widths
+    input  wire [DIM*(W+1)-1:0] touch_lo, // the in-touch box: mouse - box and mouse + box,
+    input  wire [DIM*(W+1)-1:0] touch_hi, //   W+1 bits per lane, exact
     input  wire [DIM*W-1:0] mouse,
     input  wire             mouse_down,
     input  wire [W-1:0]     damping,
@@ -409,34 +410,6 @@ module node_unit #(
     wire           acc_clear2 = PAIR != 0 && pass_w && !ground_w && has_w[PAIR];
     wire [DIM*W-1:0] wdata, wdata2;
     wire [DIM*W-1:0] b_pos_raw;  // port B before the written flags
-
-    // ---- the in-touch box around the pointer (EN_MOUSE, not GRAB): touch_lo = mouse - BOX
-    // and touch_hi = mouse + BOX per axis, exact in W+1 bits, registered from the pointer
-    // and the BOX register of the cycle before (so a node's in-touch test is two
-    // comparisons, not a subtraction and then a comparison). Each unit forms its own:
-    // one copy fanned out to every unit's comparators across the device set the largest
-    // build's clock. The constants are written between frames, and the first test of a
-    // frame comes cycles after its sample. ----
-    wire [DIM*(W+1)-1:0] touch_lo, touch_hi;
-    generate
-        if (EN_MOUSE && !GRAB) begin : g_touch_box
-            genvar bx;
-            for (bx = 0; bx < DIM; bx = bx + 1) begin : g_axis
-                wire [W:0] m = {mouse[bx*W + W-1], mouse[bx*W +: W]}, b = {box[bx*W + W-1], box[bx*W +: W]};
-                reg  [W:0] lo_q, hi_q;
-                always @(posedge clk) begin
-                    lo_q <= m - b;
-                    hi_q <= m + b;
-                end
-                assign touch_lo[bx*(W+1) +: W+1] = lo_q;
-                assign touch_hi[bx*(W+1) +: W+1] = hi_q;
-            end
-        end else begin : g_no_touch_box
-            assign touch_lo = {(DIM*(W+1)){1'b0}};
-            assign touch_hi = {(DIM*(W+1)){1'b0}};
-            wire unused_box = &{1'b0, box};
-        end
-    endgenerate
 
     genvar k;
     generate

@@ -95,6 +95,7 @@ module strand_core #(
     wire          frame_start, verlet_start, ground_start, seq_start, force_start;
     wire          fv, seq_done, force_done, scan_end;
     wire [DW-1:0] mouse_q;
+    wire [DIM*(W+1)-1:0] touch_lo, touch_hi;  // the in-touch box around the pointer
     wire          mouse_down_q;
     wire          init_we;
     wire [AW-1:0] init_addr;
@@ -114,7 +115,7 @@ module strand_core #(
         .fv(fv), .seq_done(seq_done), .force_done(force_done), .scan_end(scan_end),
         .phase(phase), .frame_start(frame_start), .verlet_start(verlet_start), .ground_start(ground_start),
         .seq_start(seq_start), .force_start(force_start), .frame_done(frame_done), .irq(irq),
-        .mouse_q(mouse_q), .mouse_down_q(mouse_down_q),
+        .mouse_q(mouse_q), .mouse_down_q(mouse_down_q), .box(box), .touch_lo(touch_lo), .touch_hi(touch_hi),
         .init_we(init_we), .init_addr(init_addr), .init_addr_next(init_addr_next), .init_node0(init_node0), .init_pos(init_pos), .init_prev(init_prev));
     assign busy = phase != PH_IDLE;
     // NODE and EDGE writes load a graph's body, only when idle (a chain is laid out by CMD)
@@ -346,7 +347,7 @@ module strand_core #(
                 , .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
-                .gdt2(gdt2), .box(box),
+                .gdt2(gdt2), .touch_lo(touch_lo), .touch_hi(touch_hi),
                 .mouse(mouse_q), .mouse_down(mouse_down_q), .damping(damping), .impulse(impulse),
                 .ground(ground), .friction(friction),
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),
