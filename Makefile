@@ -234,7 +234,8 @@ HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 
 # build), the planted faults, random initial values, 50 random scenes on the fixed and the
 # planned builds (scripts/lockstep_fuzz.py: they cover every build class, whatever the seed)
 test-lockstep: $(STRAND) $(GEN_HDRS)
-	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 7 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3
+	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 7 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3 \
+	    --late-pins-scene tb/scenes/chain_pinned_moving.scene:16
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
 
 # The traces make wave opens: save files name only signals the trace has, 10 ns a cycle,

@@ -456,6 +456,8 @@ def main():
                     help="with --harness-for: the build that traces every signal of the core (make wave's)")
     ap.add_argument("--faults", action="store_true", help="check the planted faults are caught")
     ap.add_argument("--reset-seeds", type=int, default=0, help="random-initialisation seeds for the first --scene")
+    ap.add_argument("--late-pins-scene", action="append", default=[], metavar="PATH:SEEDS",
+                    help="also run this scene with --late-pins, once for each of the seeds 1 .. SEEDS")
     ap.add_argument("--scenes-only", action="store_true",
                     help="write the N scenes and check that 'strand info' derives each one's build; build and run nothing")
     a = ap.parse_args()
@@ -496,6 +498,11 @@ def main():
             jobs.append((f"reset-seed {k + 1}", [first, "--frames", "20", "+verilator+rand+reset+2",
                                                   f"+verilator+seed+{k + 1}"], read_build(first), "", ""))
         jobs.append(("reset-zero", [first, "--frames", "20"], read_build(first), "", ""))
+    for spec in a.late_pins_scene:  # its PINs drawn into the init walk, a seed a draw
+        path, _, n = spec.partition(":")
+        for k in range(int(n or 1)):
+            jobs.append((f"late-pins seed {k + 1} {path}", [path, "--quiet", "--late-pins", "--seed", str(k + 1)],
+                         read_build(path), "", ""))
     if a.faults:
         fs = "tb/scenes/chain_q10_8.scene"
         for kind in faults.FAULTS:
