@@ -99,6 +99,7 @@ BUILDS = [
     # packed, to see whether they fit the logic (the 8 units' routing does not finish: below)
     ("q10_1x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 1, "K": 256, "ARCH": 1}, "ecp5p"),
     ("q10_4x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 4, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("q10_6x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 6, "K": 256, "ARCH": 1}, "ecp5p"),
     ("q10_8x256_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 8, "K": 256, "ARCH": 1}, "ecp5p"),
     ("q10_12x256_pair_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 12, "K": 256, "ARCH": 1, "RULE": 1},
      "ecp5p"),
@@ -119,6 +120,7 @@ PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # report gives the multipliers they would need.
 PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe_s1": [1], "1x256_pipe_s4": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [1], "8x128_pair_pipe": [],
               "cloth_pipe": [1], "q10_1x256_pipe": [1], "q10_4x256_pipe": [1, 2, 3],
+              "q10_6x256_pipe": [1, 2, 3],
               "q10_8x256_pipe": [], "q10_12x256_pair_pipe": []}
 # Builds routed by nextpnr's router2 instead of its default router1 (a device filled to three
 # quarters). The 4x5 is back on router1: router2 stalled on it twice, at about 19,000 overused
