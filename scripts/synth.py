@@ -109,9 +109,9 @@ BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
 MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
 UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
-# Seeds of the pipelined builds' place and route: three for the largest placed build (the
-# Q10.8 4x256), whose median is the clock the CPU comparison uses (one seed's fmax moves by
-# several MHz with nothing changed); one for the others (a run of the WebAssembly nextpnr-ecp5
+# Seeds of the pipelined builds' place and route: three for the largest placed builds (the
+# Q10.8 4x256 and 6x256), whose median is the clock the CPU comparison uses (one seed's fmax
+# moves by several MHz with nothing changed); one for the others (a run of the WebAssembly nextpnr-ecp5
 # on the 4x5 pipelined build takes an hour or more, its router congested by eight pipes in a
 # small body; the 1x256 about 7 minutes; the 4x256 some hours, most of it placing a design that
 # fills three quarters of the device). The 4x5, the 1x256, 2x256 and 4x256 and the cloth
