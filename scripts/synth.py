@@ -519,7 +519,10 @@ def report(bdir, gen, out, srcs):
       "above (hierarchical); "
       + (", ".join(f"{b} (place and route{' with router2' if b in ROUTER2 else ''}: {pnr_minutes(b)})"
                    for b in placed_pipe if b not in PIPE_PACK)
-         + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each. "
+         + " also through synth_ecp5 and nextpnr-ecp5 as above, one seed each"
+         + "".join(f" ({', '.join(many)}: {len(seeds_of(many[0]))} seeds)" for many in
+                   [[b for b in placed_pipe if b not in PIPE_PACK and len(seeds_of(b)) > 1]] if many)
+         + ". "
          if any(b not in PIPE_PACK for b in placed_pipe) else "")
       + "".join(f"{b}: synth_ecp5 and nextpnr-ecp5's packing (`--pack-only`), which says whether the design "
                 f"fits the device{'' if packs[b] is None else ', and it does' if packs[b].get('fits') else ', and it does not'}: "
