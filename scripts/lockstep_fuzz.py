@@ -500,6 +500,9 @@ def main():
         jobs.append(("reset-zero", [first, "--frames", "20"], read_build(first), "", ""))
     for spec in a.late_pins_scene:  # its PINs drawn into the init walk, a seed a draw
         path, _, n = spec.partition(":")
+        if not (n or "1").isdigit() or int(n or 1) < 1 or not os.path.isfile(os.path.join(ROOT, path)):
+            print(f"lockstep_fuzz: --late-pins-scene {spec}: want PATH:SEEDS, an existing scene and a count >= 1")
+            return 2
         for k in range(int(n or 1)):
             jobs.append((f"late-pins seed {k + 1} {path}", [path, "--quiet", "--late-pins", "--seed", str(k + 1)],
                          read_build(path), "", ""))
