@@ -65,10 +65,10 @@ module frame_ctrl #(
     output wire [DIM*(W+1)-1:0] touch_lo,  // mouse_q - BOX, per axis (W+1 bits each, exact)
     output wire [DIM*(W+1)-1:0] touch_hi,  // mouse_q + BOX
 
-    output wire             init_we,       // the init walk writes node init_addr now
-    output wire [AW-1:0]    init_addr,
-    output wire [AW-1:0]    init_addr_next, // init_addr after this edge (outside the walk: the walk's second node)
-    output wire             init_node0,    // init_addr is a unit's node 0 (outside the walk too: the first node)
+    output wire             init_we_d,     // the init walk writes node init_addr_d in the next cycle
+    output wire [AW-1:0]    init_addr_d,   //   (strand_core registers both beside each unit)
+    output wire [AW-1:0]    init_addr_next, // the node the walk writes after that one (outside the walk: its second node)
+    output wire             init_node0,    // the walk writes a unit's node 0 now (outside the walk too: the first node)
     output wire [DIM*W-1:0] init_pos,
     output wire [DIM*W-1:0] init_prev
 );
@@ -100,7 +100,6 @@ module frame_ctrl #(
     assign force_start  = substep_start && EN_SPRINGS;
     assign verlet_start = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
     assign seq_start    = verlet_end && EN_CONSTRAINTS;
-    assign init_we      = phase == PH_INIT;
 
     // ---- the init walk (chains): the node, its position and previous position ----
     genvar k;
@@ -156,6 +155,12 @@ module frame_ctrl #(
             assign init_node0     = node0_q;
             localparam [AW-1:0] ADDR_ZERO = {AW{1'b0}};
             localparam [AW-1:0] ADDR_ONE  = next_node(ADDR_ZERO);
+            // The walk's write in the next cycle (phase == PH_INIT then, and addr_q's next
+            // value), given a cycle ahead: each unit registers its own copy, so that no one
+            // register of the walk fans out across the device to every unit's write port and
+            // written flags.
+            assign init_we_d   = !reset && (walking_q ? !walk_end : phase == PH_IDLE && walk);
+            assign init_addr_d = reset || (walking_q && walk_end) ? ADDR_ZERO : walking_q ? after_q : addr_q;
             always @(posedge clk) begin
                 if (reset) begin
                     addr_q  <= ADDR_ZERO;
@@ -172,11 +177,11 @@ module frame_ctrl #(
                 end
             end
             assign walk_end  = walking_q && count_q == N_LAST;
-            assign init_addr = addr_q;
             assign init_pos  = pos_q;
         end else begin : g_no_walk
             assign walk_end  = 1'b0;
-            assign init_addr = {AW{1'b0}};
+            assign init_we_d   = 1'b0;
+            assign init_addr_d = {AW{1'b0}};
             assign init_addr_next = {AW{1'b0}};
             assign init_node0     = 1'b0;
             assign init_pos  = {(DIM*W){1'b0}};

@@ -367,8 +367,8 @@ module node_unit #(
     wire           wprev    = pass_w || w_at_rest;
     // A PIN reaches the flags through a register (pin_pend_q): the bus's address decode then
     // ends at a flip-flop of the unit, not in the walk's flag lookup across the device. So
-    // the flags hold a PIN from the second cycle after its write; pinned_now is what they
-    // will hold next cycle.
+    // the flags hold a PIN from the second cycle after its write (pin_pend_q says which PIN
+    // is on its way there).
     reg           pin_pend_q;
     reg [IW-1:0]  pin_pend_idx_q;
     always @(posedge clk) begin

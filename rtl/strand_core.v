@@ -97,8 +97,8 @@ module strand_core #(
     wire [DW-1:0] mouse_q;
     wire [DIM*(W+1)-1:0] touch_lo, touch_hi;  // the in-touch box around the pointer
     wire          mouse_down_q;
-    wire          init_we;
-    wire [AW-1:0] init_addr;
+    wire          init_we_d;
+    wire [AW-1:0] init_addr_d;
     /* verilator lint_off UNUSEDSIGNAL */
     // the units use only its node bits: a unit's w_pin is read only when the walk is in the unit
     wire [AW-1:0] init_addr_next;
@@ -116,7 +116,7 @@ module strand_core #(
         .phase(phase), .frame_start(frame_start), .verlet_start(verlet_start), .ground_start(ground_start),
         .seq_start(seq_start), .force_start(force_start), .frame_done(frame_done), .irq(irq),
         .mouse_q(mouse_q), .mouse_down_q(mouse_down_q), .box(box), .touch_lo(touch_lo), .touch_hi(touch_hi),
-        .init_we(init_we), .init_addr(init_addr), .init_addr_next(init_addr_next), .init_node0(init_node0), .init_pos(init_pos), .init_prev(init_prev));
+        .init_we_d(init_we_d), .init_addr_d(init_addr_d), .init_addr_next(init_addr_next), .init_node0(init_node0), .init_pos(init_pos), .init_prev(init_prev));
     assign busy = phase != PH_IDLE;
     // NODE and EDGE writes load a graph's body, only when idle (a chain is laid out by CMD)
     wire node_we = node_we_any && phase == PH_IDLE && GRAPH;
@@ -338,7 +338,15 @@ module strand_core #(
     generate
         for (u = 0; u < M; u = u + 1) begin : g_unit
             localparam [UW-1:0] U_ID = u;
-            wire here_init = init_we && init_addr[AW-1:IW] == U_ID;
+            // the init walk's write in this unit, registered here from frame_ctrl's next-cycle
+            // values (keep: one copy per unit, placed beside it, not merged into one register)
+            reg          here_init_q;
+            reg [IW-1:0] init_idx_q;
+            (* keep *) always @(posedge clk) begin
+                here_init_q <= init_we_d && init_addr_d[AW-1:IW] == U_ID;
+                init_idx_q  <= init_addr_d[IW-1:0];
+            end
+            wire here_init = here_init_q;
             wire here_load = node_we && cfg_node[AW-1:IW] == U_ID;  // NODE: the address is in cfg_data, as for PIN
             wire here_seq  = seq_we[u];
             wire here_acc  = acc_we_all[u];
@@ -355,7 +363,7 @@ module strand_core #(
                 .a_acc(a_acc_all[u*DW +: DW]), .a_pinned(a_pin_all[u]),
                 .acc_we(here_acc), .acc_w(acc_w_all[u*DW +: DW]),
                 .w_en(here_init || here_load || here_seq),
-                .w_idx(here_init ? init_addr[IW-1:0] : here_load ? cfg_node[IW-1:0] : here_acc ? acc_idx_all[u*IW +: IW] : seq_widx[u*IW +: IW]),
+                .w_idx(here_init ? init_idx_q : here_load ? cfg_node[IW-1:0] : here_acc ? acc_idx_all[u*IW +: IW] : seq_widx[u*IW +: IW]),
                 .w_pos(here_init ? init_pos : here_load ? load_pos : seq_wpos[u*DW +: DW]),
                 .w_at_rest(here_init || here_load), .w_prev(here_init ? init_prev : load_prev),
                 .rest_idx(GRAPH ? cfg_node[IW-1:0] : init_addr_next[IW-1:0]), .rest_node0(init_node0),
