@@ -308,16 +308,17 @@ DP_FILES = {"toward": ["toward.v"], "spring_force": ["spring_force.v"],
 DP_COMMON = ["fx_add.v", "fx_mul.v", "fx_round.v", "fx_sqrt.v", "fx_div.v"]
 
 
-def unit_param(unit, w, f, bits):
-    base = unit.replace("_pipe", "")
-    p = [f"-Ptb_fx_{unit}.W={w}"]
-    if base in ("mul", "div"):
-        p.append(f"-Ptb_fx_{unit}.F={f}")
-    if base == "sqrt":
-        p.append(f"-Ptb_fx_{unit}.SQRT_BITS={bits}")
-    if base == "div":
-        p.append(f"-Ptb_fx_{unit}.DIV_BITS={bits}")
-    return p
+def unit_param(unit, w, f, bits, extra):
+    """The bench's parameters, from tb/units.mk's UNITS_PARAMS_<unit> ($(1) W, $(2) F, $(3) BITS,
+    $(or $(4),DEFAULT) the configuration's optional seventh field), as make test-units gives them."""
+    mk = open(os.path.join(ROOT, "tb", "units.mk")).read()
+    m = re.search(r"^UNITS_PARAMS_" + unit + r"\s*=\s*(.*)$", mk, re.M)
+    if not m:
+        raise SystemExit(f"tb/units.mk: no UNITS_PARAMS_{unit} for unit '{unit}'")
+    text = re.sub(r"\$\(or \$\(4\),([^)]*)\)", lambda d: extra or d.group(1), m.group(1))
+    for i, v in enumerate((w, f, bits), 1):
+        text = text.replace(f"$({i})", v)
+    return text.split()
 
 
 def check_units(site, rtl, work, deadline):
@@ -327,28 +328,33 @@ def check_units(site, rtl, work, deadline):
     ran = 0
     for cfg in icarus + dp:
         parts = cfg.split(":")
-        if len(parts) == 6 and parts[1] in UNIT_FILES:
-            name, unit, _, w, fr, bits = parts
+        # a unit: name:unit:mode:W:F:BITS[:extra]; a datapath: name:module:W:F:SQRT_BITS:DIV_BITS:DIM[:STEPS]
+        datapath = False
+        if len(parts) in (6, 7) and parts[1] in UNIT_FILES:
+            name, unit, _, w, fr, bits = parts[:6]
             files = UNIT_FILES[unit]
             if f not in files and not (f.endswith(".vh") and unit.replace("_pipe", "") in f):
                 continue
             tb = f"tb/tb_fx_{unit}.v"
-            params = unit_param(unit, w, fr, bits)
-        elif len(parts) == 7:
-            name, mod, w, fr, sb, db, dim = parts
+            params = unit_param(unit, w, fr, bits, parts[6] if len(parts) == 7 else "")
+        elif len(parts) in (7, 8) and parts[1] in DP_FILES:
+            datapath = True
+            name, mod, w, fr, sb, db, dim = parts[:7]
             files = DP_FILES[mod] + DP_COMMON
             if f not in files and not f.endswith(".vh"):
                 continue
             tb = f"tb/tb_{mod}.v"
             params = [f"-Ptb_{mod}.{k}={v}" for k, v in (("W", w), ("F", fr), ("SQRT_BITS", sb), ("DIV_BITS", db), ("DIM", dim))]
+            if len(parts) == 8:
+                params.append(f"-Ptb_{mod}.STEPS={parts[7]}")
         else:
-            continue
+            raise SystemExit(f"tb/units.mk: configuration '{cfg}' is neither a unit nor a datapath mutate.py knows")
         vec = os.path.join(ROOT, BUILD, "units", name, "vectors.hex")
         if not os.path.exists(vec):
             continue
         ran += 1
         vvp = os.path.join(work, f"{name}.vvp")
-        srcs = [os.path.join(rtl, x) for x in files + (DP_COMMON if len(parts) == 7 else []) if os.path.exists(os.path.join(rtl, x))]
+        srcs = [os.path.join(rtl, x) for x in files + (DP_COMMON if datapath else []) if os.path.exists(os.path.join(rtl, x))]
         rc, out = run(["iverilog", "-g2005", "-I", rtl, "-o", vvp] + params + [tb] + sorted(set(srcs)),
                       max(1, deadline - time.time()))
         if rc == BUDGET_SPENT:
