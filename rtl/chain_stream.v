@@ -84,6 +84,16 @@ module chain_stream #(
     input  wire [M*DIM*W-1:0] pair_prev_o_all,
     input  wire [M-1:0]     pair_pin_e_all,   //   and whether each is pinned or held
     input  wire [M-1:0]     pair_pin_o_all,
+    output reg              pair_fuse,        // FUSE: the pair read now is the Verlet step's (the first sweep's)
+    output reg              pair_has_o,       //   and its odd bank's node exists (not so in the last pair of an odd K)
+    input  wire [M*DIM*W-1:0] pass_pos_e_all,  // FUSE: the units' Verlet step's results, STRAND_FUSE_LAG cycles
+    input  wire [M*DIM*W-1:0] pass_pos_o_all,  //   after the pair read, in place of the words: the new positions,
+    input  wire [M*DIM*W-1:0] pass_prev_e_all, //   previous positions (PROJECTION),
+    input  wire [M*DIM*W-1:0] pass_prev_o_all,
+    input  wire [M-1:0]     pass_pin_e_all,   //   pinned or held,
+    input  wire [M-1:0]     pass_pin_o_all,
+    input  wire [M-1:0]     pass_held_e_all,  //   and held (GRAB)
+    input  wire [M-1:0]     pass_held_o_all,
 
     output wire [M-1:0]     wr_en,      // write port 1, per unit: the node (centred), or
     output wire [M*IW-1:0]  wr_idx_all, //   the link's lower node a (pairwise)
@@ -99,7 +109,7 @@ module chain_stream #(
 );
 
     localparam integer DW     = DIM * W;
-    localparam integer NB     = 2 * DW + 1;                    // a node's bundle: {pin, prev, pos}
+    localparam integer NB     = 2 * DW + 2;                    // a node's bundle: {held, pin, prev, pos}
 `include "pipe_latency.vh"
     localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS)
                                            : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS);
@@ -108,15 +118,25 @@ module chain_stream #(
     localparam [0:0]   K_EVEN = K % 2 == 0;
     localparam integer SP     = NS + 2 > LT + 4 ? NS + 2 : LT + 4;  // a sweep's cycles before the next
     localparam integer SL     = NS + LT + 3;                   // the last sweep's, to its last write
-    localparam integer TW     = $clog2(SL + 1);
+    // FUSE: the first sweep of a pass takes its words from the units' Verlet step, FUSE_LAG
+    // cycles after their read (node_unit's stages R, A, B, C): its slots, and its length, are
+    // that much later
+    localparam integer LAG    = FUSE != 0 ? `STRAND_FUSE_LAG : 0;
+    localparam integer SF     = SP + LAG;                      // the first sweep's cycles before the next
+    localparam integer TW     = $clog2((SL > SF ? SL : SF) + 1);
     localparam integer XW     = IW + 1;                        // a slot number, 0 .. NS-1
     localparam integer PW     = IW + 2;                        // a stream position or node, -1 .. K
     localparam integer ITW    = ITER > 1 ? $clog2(ITER) : 1;
-    localparam integer TAG_W  = XW + 4;                        // j, odd, exists, a's pin, b's pin
-    localparam integer SP_LAST_I = SP - 1, SL_LAST_I = SL - 1, PJ_I = PJ, PJ1_I = PJ + 1, NS1_I = NS + 1;
+    localparam integer TAG_W  = XW + 4;                        // j, odd, exists, a's pin, b's pin (centred: 0, pin)
+    // FUSE, the centred rule's up pipe: also whether the slot is the first sweep's, and the
+    // node's own position (written when the sweep leaves it where the Verlet step put it)
+    localparam integer TAG_U  = FUSE != 0 ? TAG_W + 1 + DW : TAG_W;
+    localparam integer SP_LAST_I = SP - 1, SL_LAST_I = SL - 1, SF_LAST_I = SF - 1, LAG_I = (1 << TW) - LAG, PJ_I = PJ, PJ1_I = PJ + 1, NS1_I = NS + 1;
     localparam integer ITER_LAST_I = ITER - 1, K_LAST_I = K - 1, K_HALF_I = K / 2, LAST_ODD_I = (K - 1) / 2;
     localparam [TW-1:0]  SP_LAST = SP_LAST_I[TW-1:0];
     localparam [TW-1:0]  SL_LAST = SL_LAST_I[TW-1:0];
+    localparam [TW-1:0]  SF_LAST = SF_LAST_I[TW-1:0];
+    localparam [TW-1:0]  TS_FIRST = LAG_I[TW-1:0];           // the slot counter at a fused sweep's start: -LAG
     localparam [TW-1:0]  T_PJ    = PJ_I[TW-1:0];
     localparam [TW-1:0]  T_PJ1   = PJ1_I[TW-1:0];
     localparam [TW-1:0]  T_NS1   = NS1_I[TW-1:0];
@@ -135,25 +155,30 @@ module chain_stream #(
     reg [TW-1:0]  t;
     reg           colour;
     reg [ITW-1:0] iter_q;
+    reg           fused;     // FUSE: the sweep under way is the pass's first, its words the Verlet step's
+    reg [TW-1:0]  ts;        // the slot counter: t, or in a fused sweep t - LAG (from -LAG, mod 2^TW)
     wire          last      = colour && iter_q == ITER_LAST;  // the pass's last sweep
-    wire          sweep_end = running && t == (last ? SL_LAST : SP_LAST);
+    wire          sweep_end = running && t == (last ? SL_LAST : fused ? SF_LAST : SP_LAST);
     // The sweep counter's next value (running, t: the registers below take it). The slot's
     // flags (issued; first, last) are formed from it a cycle ahead and registered, since they
     // select every unit's pipe inputs: a compare on t would sit before that wide fan-out.
     wire          start_now    = start && !running;
     wire          running_next = reset ? 1'b0 : start_now ? 1'b1 : sweep_end && last ? 1'b0 : running;
     wire [TW-1:0] t_next       = reset || start_now || sweep_end ? {TW{1'b0}} : running ? t + 1'b1 : t;
+    wire          fused_next   = !reset && (start_now ? FUSE != 0 : !sweep_end && fused);
+    wire [TW-1:0] ts_start     = FUSE != 0 ? TS_FIRST : {TW{1'b0}};
+    wire [TW-1:0] ts_next      = reset || sweep_end ? {TW{1'b0}} : start_now ? ts_start : running ? ts + 1'b1 : ts;
     reg           slot;          // slot j = t - 2 is issued (running, 2 <= t <= NS + 1)
     // pair t - 1 is read (running, 1 <= t <= T_PJ), the pair row jr = t - 1: both registered,
     // formed a cycle ahead from t (below), so that the memories' addresses and the pinned
     // flags' multiplexers start from flip-flops, not from the sweep counter's subtract
     reg           reading;
     reg [IW-1:0]  jr;
-    wire          take_after = K_EVEN && running && t == T_PJ1; // the neighbours' last pair arrives
+    wire          take_after = K_EVEN && running && ts == T_PJ1; // the neighbours' last pair arrives
     localparam [TW-1:0] T_TWO = 2;
     /* verilator lint_off UNUSEDSIGNAL */
     // a slot or pair number needs the low bits only
-    wire [TW-1:0] t_minus_2 = t - T_TWO;
+    wire [TW-1:0] t_minus_2 = ts - T_TWO;
     // the slot number j = t - 2, as XW bits: zero-extended first, since the sweep counter can be
     // narrower than a slot number (K = 256: TW = 8 bits, XW = 9)
     wire [TW+XW-1:0] t_minus_2_wide = {{XW{1'b0}}, t_minus_2};
@@ -173,12 +198,12 @@ module chain_stream #(
     endfunction
     // next cycle's flags, from t_next's three cases rather than from t_next itself: so the
     // compares run on t beside the choice of t_next, not after it
-    wire [3:0] flags_next = reset || start_now || sweep_end ? slot_flags({TW{1'b0}})
-                          : running ? slot_flags(t + 1'b1) : slot_flags(t);
+    wire [3:0] flags_next = reset || sweep_end ? slot_flags({TW{1'b0}}) : start_now ? slot_flags(ts_start)
+                          : running ? slot_flags(ts + 1'b1) : slot_flags(ts);
     // the slots issued: the count restarts at the sweep's first slot, so that it reaches NS
     // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 2), and FEC
     // stays high until the next sweep's first slot
-    wire [CW-1:0] counter_next = !slot ? counter : t == T_TWO ? {{(CW-1){1'b0}}, 1'b1} : counter + 1'b1;
+    wire [CW-1:0] counter_next = !slot ? counter : ts == T_TWO ? {{(CW-1){1'b0}}, 1'b1} : counter + 1'b1;
 
     // next cycle's t is t + 1 while a sweep runs on (else 0: a sweep's end, a start, idle), so
     // next cycle reads pair t when t + 1 <= T_PJ
@@ -191,14 +216,20 @@ module chain_stream #(
     // next cycle's reading and jr (the units' row registers take them too, below)
     wire          read_d = !reset && reading_next;
     wire [IW-1:0] jr_d   = read_d ? t_wide[IW-1:0] : {IW{1'b0}};
+    localparam integer PJ_LAST_I = PJ - 1;
+    localparam [IW-1:0] PJ_LAST = PJ_LAST_I[IW-1:0];
     always @(posedge clk) begin
-        reading <= read_d;
-        jr      <= jr_d;
+        reading    <= read_d;
+        jr         <= jr_d;
+        pair_fuse  <= read_d && fused;
+        pair_has_o <= K_EVEN || jr_d != PJ_LAST;
     end
 
     always @(posedge clk) begin
         running <= running_next;
         t       <= t_next;
+        fused   <= fused_next;
+        ts      <= ts_next;
         if (reset) begin
             colour  <= 1'b0;
             iter_q  <= {ITW{1'b0}};
@@ -242,11 +273,11 @@ module chain_stream #(
     // the slot's flags, colour, number and the rest length.
     // The window too is kept from these copies, a cycle after the slot (slot_s): so no
     // choice sits between a memory's output and a register.
-    reg           slot_s, at_first_s, at_last_even_s, at_last_odd_s, colour_s;
+    reg           slot_s, at_first_s, at_last_even_s, at_last_odd_s, colour_s, fused_s;
     reg [XW-1:0]  j_s;
     reg [W-1:0]   rest_s;
     always @(posedge clk) begin
-        {slot_s, at_first_s, at_last_even_s, at_last_odd_s, colour_s} <= {slot, at_first, at_last_even, at_last_odd, colour};
+        {slot_s, at_first_s, at_last_even_s, at_last_odd_s, colour_s, fused_s} <= {slot, at_first, at_last_even, at_last_odd, colour, fused};
         j_s    <= j;
         rest_s <= rest_len;
     end
@@ -257,8 +288,24 @@ module chain_stream #(
     generate
         for (u = 0; u < M; u = u + 1) begin : g_rows
             localparam [0:0] DOWN = u % 2 == 1;
-            wire [NB-1:0] own_e = {pair_pin_e_all[u], pair_prev_e_all[u*DW +: DW], pair_pos_e_all[u*DW +: DW]};
-            wire [NB-1:0] own_o = {pair_pin_o_all[u], pair_prev_o_all[u*DW +: DW], pair_pos_o_all[u*DW +: DW]};
+            // the words of the memories (held: 0, a held node is pinned to these sweeps), or in a
+            // fused sweep the Verlet step's (its own copy of `fused` per unit: a wide select)
+            wire [NB-1:0] mem_e = {1'b0, pair_pin_e_all[u], pair_prev_e_all[u*DW +: DW], pair_pos_e_all[u*DW +: DW]};
+            wire [NB-1:0] mem_o = {1'b0, pair_pin_o_all[u], pair_prev_o_all[u*DW +: DW], pair_pos_o_all[u*DW +: DW]};
+            wire [NB-1:0] own_e, own_o;
+            if (FUSE != 0) begin : g_fuse_words
+                wire [NB-1:0] pass_e = {pass_held_e_all[u], pass_pin_e_all[u], pass_prev_e_all[u*DW +: DW], pass_pos_e_all[u*DW +: DW]};
+                wire [NB-1:0] pass_o = {pass_held_o_all[u], pass_pin_o_all[u], pass_prev_o_all[u*DW +: DW], pass_pos_o_all[u*DW +: DW]};
+                (* keep *) reg fused_u;
+                always @(posedge clk) fused_u <= fused_next;
+                assign own_e = fused_u ? pass_e : mem_e;
+                assign own_o = fused_u ? pass_o : mem_o;
+            end else begin : g_mem_words
+                assign own_e = mem_e;
+                assign own_o = mem_o;
+                wire unused_pass = &{1'b0, pass_pos_e_all[u*DW +: DW], pass_pos_o_all[u*DW +: DW], pass_prev_e_all[u*DW +: DW],
+                                     pass_prev_o_all[u*DW +: DW], pass_pin_e_all[u], pass_pin_o_all[u], pass_held_e_all[u], pass_held_o_all[u]};
+            end
             // The unit's rows: its own registers, formed from next cycle's read (jr_d) and kept
             // apart from every other unit's (keep: Yosys would merge equal flip-flops), so that
             // the row reaches the unit's memories and its pinned flags' K-way select from a
@@ -371,17 +418,28 @@ module chain_stream #(
                 wire [NB-1:0] nb_dn   = even_s ? s_1  : s_0;    // position p+1
                 wire          up_ex   = !(even_s && at_first_s && !HAS_BEFORE);
                 wire          dn_ex   = even_s ? !(at_last_odd_s && !HAS_AFTER) : !(at_last_even_s && !HAS_AFTER);
-                wire          pin     = node[NB-1];
+                wire          pin     = node[NB-2];   // pinned or held
+                wire          held    = node[NB-1];   // held, in a fused sweep
                 wire             u_valid, u_ok, d_valid, d_ok;
                 wire [DW-1:0]    u_t, d_t;
-                wire [TAG_W-1:0] u_tag, d_tag;
+                wire [TAG_U-1:0] u_tag;
+                wire [TAG_W-1:0] d_tag;
+                // the up pipe's tag: {j, odd, exists, held, pin}; FUSE: then whether the slot is the
+                // fused sweep's, and first the node's position
+                wire [TAG_U-1:0] u_tag_in;
+                if (FUSE != 0) begin : g_tag_fuse
+                    assign u_tag_in = {node[0 +: DW], j_s, !even_s, up_ex, held, pin, fused_s};
+                end else begin : g_tag
+                    assign u_tag_in = {j_s, !even_s, up_ex, held, pin};
+                    wire unused_fused = &{1'b0, fused_s};
+                end
                 /* verilator lint_off PINCONNECTEMPTY */
                 // the centred rule's points: nothing is carried
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_U),
                             .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_up (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_up[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_up[DW +: DW]), .in_pc(node[DW +: DW]),
-                    .in_rest(rest_s), .in_tag({j_s, !even_s, up_ex, 1'b0, pin}),
+                    .in_rest(rest_s), .in_tag(u_tag_in),
                     .out_valid(u_valid), .out_t(u_t), .out_ok(u_ok), .out_tag(u_tag), .out_p(), .out_c());
                 dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                             .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_down (
@@ -390,25 +448,43 @@ module chain_stream #(
                     .in_rest(rest_s), .in_tag({j_s, !even_s, dn_ex, 1'b0, pin}),
                     .out_valid(d_valid), .out_t(d_t), .out_ok(d_ok), .out_tag(d_tag), .out_p(), .out_c());
                 /* verilator lint_on PINCONNECTEMPTY */
-                assign o_j   = u_tag[TAG_W-1 -: XW];
-                assign o_odd = u_tag[3];
-                wire up_ok = u_valid && u_ok && u_tag[2];
+                // the up pipe's tag, as it went in (FUSE: above its lowest bit, the fused flag)
+                localparam integer FIELDS_AT = FUSE != 0 ? 1 : 0;
+                wire [TAG_W-1:0] u_fields = u_tag[FIELDS_AT +: TAG_W];
+                assign o_j   = u_fields[TAG_W-1 -: XW];
+                assign o_odd = u_fields[3];
+                wire up_ok = u_valid && u_ok && u_fields[2];
                 wire dn_ok = d_valid && d_ok && d_tag[2];
+                wire o_held = u_fields[1];
+                wire o_pin  = u_fields[0];
+                // FUSE: a node of the fused sweep is written unless pinned (and not held): the
+                // Verlet step did not write it, so its result, or where the step put it (its
+                // position, carried in the tag) when no target moves it or it is held
+                wire          o_fused;
+                wire [DW-1:0] o_own;
+                if (FUSE != 0) begin : g_own
+                    assign o_fused = u_tag[0];
+                    assign o_own   = u_tag[TAG_U-1 -: DW];
+                end else begin : g_no_own
+                    assign o_fused = 1'b0;
+                    assign o_own   = {DW{1'b0}};
+                end
                 wire [DW-1:0] avg;
                 for (k = 0; k < DIM; k = k + 1) begin : g_lane
                     fx_avg #(.W(W)) u_avg (.a(u_t[k*W +: W]), .b(d_t[k*W +: W]), .y(avg[k*W +: W]));
                 end
+                wire moved = (up_ok || dn_ok) && !o_pin;
                 always @(posedge clk) begin
                     wr_idx_q <= o_node[IW-1:0];
-                    wr_pos_q <= up_ok && dn_ok ? avg : up_ok ? u_t : d_t;
+                    wr_pos_q <= o_fused && !moved ? o_own : up_ok && dn_ok ? avg : up_ok ? u_t : d_t;
                     if (reset) wr_en_q <= 1'b0;
-                    else wr_en_q <= u_valid && (up_ok || dn_ok) && !u_tag[0];
+                    else wr_en_q <= u_valid && (o_fused ? !o_pin || o_held : moved);
                     wr2_en_q  <= 1'b0;
                     wr2_idx_q <= {IW{1'b0}};
                     wr2_pos_q <= {DW{1'b0}};
                 end
                 // the neighbours' pins do not matter to the centred rule; the down pipe's tag repeats the up one's
-                wire unused_c = &{1'b0, nb_up[NB-1], nb_dn[NB-1], u_tag[1], d_tag[TAG_W-1:3], d_tag[1:0], o_node1};
+                wire unused_c = &{1'b0, nb_up[NB-1:NB-2], nb_dn[NB-1:NB-2], d_tag[TAG_W-1:3], d_tag[1:0], o_node1};
             end else begin : g_pairwise
                 // the link (2j, 2j+1) or (2j-1, 2j): its lower node a and higher b
                 // (valid in the slot's cycle; the rest a cycle later, from the copies)
@@ -430,10 +506,11 @@ module chain_stream #(
                             .CARRY(1'b1), .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b1),
                     .in_p(a[0 +: DW]), .in_c(b[0 +: DW]), .in_pp(a[DW +: DW]), .in_pc(b[DW +: DW]),
-                    .in_rest(rest_s), .in_tag({j_s, !even_s, exists, a[NB-1], b[NB-1]}),
+                    .in_rest(rest_s), .in_tag({j_s, !even_s, exists, a[NB-2], b[NB-2]}),
                     .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
                 assign o_j   = o_tag[TAG_W-1 -: XW];
                 assign o_odd = o_tag[3];
+                wire unused_held = &{1'b0, a[NB-1], b[NB-1]};  // no fused sweep: nothing held is written
                 wire o_pin_a = o_tag[1];
                 wire o_pin_b = o_tag[0];
                 wire ok = o_valid && o_ok && o_tag[2];

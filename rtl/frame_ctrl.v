@@ -91,6 +91,8 @@ module frame_ctrl #(
     wire         walk_end;                   // its last node is written now
 
     // A substep: [FORCE] VERLET [CONSTRAIN] [GROUND]; each phase starts in the cycle the one before ends.
+    // FUSE: [FORCE] CONSTRAIN [GROUND], the Verlet step taken by the constraint pass's first sweep.
+    localparam [2:0] PH_BODY = FUSE != 0 ? PH_CONSTRAIN : PH_VERLET;  // the phase after FORCE (or the frame's start)
     wire verlet_end    = phase == PH_VERLET && fv;
     wire body_end      = EN_CONSTRAINTS ? phase == PH_CONSTRAIN && seq_done : verlet_end;
     wire substep_end   = EN_GROUND ? phase == PH_GROUND && fv : body_end;
@@ -98,8 +100,9 @@ module frame_ctrl #(
     assign frame_start  = phase == PH_IDLE && step;
     assign ground_start = body_end && EN_GROUND;
     assign force_start  = substep_start && EN_SPRINGS;
-    assign verlet_start = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
-    assign seq_start    = verlet_end && EN_CONSTRAINTS;
+    wire   body_start   = (substep_start && !EN_SPRINGS) || (phase == PH_FORCE && force_done);
+    assign verlet_start = body_start && FUSE == 0;
+    assign seq_start    = FUSE != 0 ? body_start : verlet_end && EN_CONSTRAINTS;
 
     // ---- the init walk (chains): the node, its position and previous position ----
     genvar k;
@@ -225,15 +228,15 @@ module frame_ctrl #(
                     if (walk) begin
                         phase <= PH_INIT;
                     end else if (step) begin
-                        phase        <= HAS_GRAB ? PH_GRAB : EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                        phase        <= HAS_GRAB ? PH_GRAB : EN_SPRINGS ? PH_FORCE : PH_BODY;
                         substep_q    <= {SW{1'b0}};
                         mouse_q      <= mouse;
                         mouse_down_q <= mouse_down;
                     end
                 end
                 PH_INIT:   if (walk_end) phase <= PH_IDLE;
-                PH_FORCE:  if (force_done) phase <= PH_VERLET;
-                PH_GRAB:   if (scan_end) phase <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                PH_FORCE:  if (force_done) phase <= PH_BODY;
+                PH_GRAB:   if (scan_end) phase <= EN_SPRINGS ? PH_FORCE : PH_BODY;
                 PH_VERLET: if (seq_start) phase <= PH_CONSTRAIN;
                 default:   ;
             endcase
@@ -243,7 +246,7 @@ module frame_ctrl #(
                     phase      <= PH_IDLE;
                     frame_done <= 1'b1;
                 end else begin
-                    phase     <= EN_SPRINGS ? PH_FORCE : PH_VERLET;
+                    phase     <= EN_SPRINGS ? PH_FORCE : PH_BODY;
                     substep_q <= substep_q + 1'b1;
                 end
             end

@@ -60,9 +60,11 @@ module node_lane #(
     input  wire          a_re,
     input  wire [IW-1:0] a_addr,
     input  wire [IW-1:0] b_addr,
-    input  wire          we,         // write pos (and prev when wprev) at widx
-    input  wire          wprev,
+    input  wire          we,         // write pos at widx (write port 1)
     input  wire [IW-1:0] widx,
+    input  wire          pos1,       //   the pass's way 0 (else the external data)
+    input  wire          pwe,        // write prev at pidx (its port 1: the pass's way 0, else the external data)
+    input  wire [IW-1:0] pidx,
     input  wire          acc_clear,  // the Verlet pass consumes the force of a node, the init walk and loads clear it
     input  wire [IW-1:0] acc_clear_idx,
     input  wire          acc_we,     // the spring pass writes the force of node widx
@@ -74,10 +76,12 @@ module node_lane #(
     input  wire          pair_re,
     input  wire [IW-1:0] pair_row_e,
     input  wire [IW-1:0] pair_row_o,
-    input  wire          we2,
-    input  wire          wprev2,
-    input  wire          acc_clear2,
+    input  wire          we2,        // write pos at widx2 (write port 2): the pass's way 1 (swap2: way 0), else w2_pos
     input  wire [IW-1:0] widx2,
+    input  wire          swap2,
+    input  wire          pwe2,       // write prev at pidx2: the pass's way 1
+    input  wire [IW-1:0] pidx2,
+    input  wire          acc_clear2, //   and clear its force
     input  wire [W-1:0]  w2_pos,     // the constraint pass's data (when no pass writes)
 
     // the pass pipeline (node_unit's stage valids, one set for both ways) and how the write is formed
@@ -114,25 +118,27 @@ module node_lane #(
     output wire [PAIR:0] touch,      // stage W, a way's node: |mouse - n| < box on this axis
     output wire [PAIR:0] hit,        // stage W, AXIS = GROUND_AXIS: past the boundary
     output wire [W-1:0]  wdata,      // what this axis writes now through write port 1 (the write-back lane shows it)
-    output wire [W-1:0]  wdata2      //   and through write port 2 (PAIR)
+    output wire [W-1:0]  wdata2,     //   and through write port 2 (PAIR)
+    output wire [(1+PAIR)*W-1:0] step_pos,   // stage W, each way: the step's position (the grabbed node: the pointer)
+    output wire [(1+PAIR)*W-1:0] step_prev   //   and previous position
 );
 
     localparam integer NW = 1 + PAIR;  // ways: nodes a pass takes a clock
 
     // ---- storage ----
-    wire [NW*W-1:0] n_way, np_way, gr_way, grp_way;   // stage W: each way's results (below)
+    wire [NW*W-1:0] np_way, gr_way, grp_way;          // stage W: each way's results (below)
     wire [W-1:0]    qa_e, qa_o;                     // the force memory's banks
     wire [W-1:0]    wprev_data, wprev_data2;
-    assign wdata      = pass_w ? (EN_GROUND && ground_w ? gr_way[0 +: W] : GRAB && grab_w[0] ? mouse : n_way[0 +: W]) : w_pos;
+    assign wdata      = pos1 ? (EN_GROUND && ground_w ? gr_way[0 +: W] : step_pos[0 +: W]) : w_pos;
     assign wprev_data = pass_w ? (EN_GROUND && ground_w ? grp_way[0 +: W] : np_way[0 +: W]) : w_pin ? w_pos : w_prev;
     generate
         if (PAIR != 0) begin : g_wdata2
-            assign wdata2      = pass_w ? (EN_GROUND && ground_w ? gr_way[W +: W] : GRAB && grab_w[PAIR] ? mouse : n_way[W +: W]) : w2_pos;
+            assign wdata2      = pass_w ? (EN_GROUND && ground_w ? gr_way[W +: W] : swap2 ? step_pos[0 +: W] : step_pos[W +: W]) : w2_pos;
             assign wprev_data2 = EN_GROUND && ground_w ? grp_way[W +: W] : np_way[W +: W];
         end else begin : g_no_wdata2
             assign wdata2      = {W{1'b0}};
             assign wprev_data2 = {W{1'b0}};
-            wire unused_w2 = &{1'b0, w2_pos, wprev2, acc_clear2};
+            wire unused_w2 = &{1'b0, w2_pos, swap2, pwe2, pidx2, acc_clear2};
         end
     endgenerate
 
@@ -146,8 +152,8 @@ module node_lane #(
     /* verilator lint_off PINCONNECTEMPTY */
     // the previous positions and the forces have one reader (port A, or the pair read)
     bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_prev (
-        .clk(clk), .reset(reset), .we(we && wprev), .waddr(widx), .wdata(wprev_data),
-        .we2(PAIR != 0 && we2 && wprev2), .waddr2(widx2), .wdata2(wprev_data2),
+        .clk(clk), .reset(reset), .we(pwe), .waddr(pidx), .wdata(wprev_data),
+        .we2(PAIR != 0 && pwe2), .waddr2(pidx2), .wdata2(wprev_data2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qp_e), .rdata_o(qp_o),
         .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
@@ -161,7 +167,7 @@ module node_lane #(
             bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_acc (
                 .clk(clk), .reset(reset), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
                 .wdata(acc_clear ? {W{1'b0}} : acc_w),
-                .we2(PAIR != 0 && acc_clear2), .waddr2(widx2), .wdata2({W{1'b0}}),
+                .we2(PAIR != 0 && acc_clear2), .waddr2(pidx2), .wdata2({W{1'b0}}),
                 .re_a(a_re), .raddr_a(a_addr), .rdata_a(qa),
                 .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(qa_e), .rdata_o(qa_o),
                 .re_b(1'b0), .raddr_b({IW{1'b0}}), .rdata_b());
@@ -226,8 +232,9 @@ module node_lane #(
             end
             assign hit[wy]   = hit_w;
             assign touch[wy] = touch_w;
-            assign n_way[wy*W +: W]  = n_w;
             assign np_way[wy*W +: W] = np;
+            assign step_pos[wy*W +: W]  = GRAB && grab_w[wy] ? mouse : n_w;
+            assign step_prev[wy*W +: W] = np;
             assign gr_way[wy*W +: W]  = g_w;
             assign grp_way[wy*W +: W] = gp_w;
 

@@ -107,6 +107,20 @@ module node_unit #(
     input  wire             w2_en,
     input  wire [IW-1:0]    w2_idx,
     input  wire [DIM*W-1:0] w2_pos,
+    // FUSE: the pair read is the first sweep's, and the Verlet step takes it (the odd bank's
+    // node of it when pair_has_o); the step's results go to the sweep STRAND_FUSE_LAG cycles
+    // after the read, as the sweep's words, while the step writes the previous positions and
+    // the positions of the nodes the sweep does not move (the other colour's)
+    input  wire             pair_fuse,
+    input  wire             pair_has_o,
+    output wire [DIM*W-1:0] pass_pos_e,
+    output wire [DIM*W-1:0] pass_pos_o,
+    output wire [DIM*W-1:0] pass_prev_e,
+    output wire [DIM*W-1:0] pass_prev_o,
+    output wire             pass_pin_e,   // pinned or held
+    output wire             pass_pin_o,
+    output wire             pass_held_e,
+    output wire             pass_held_o,
 
     // port B: external position reads, the word two cycles after the index
     input  wire [IW-1:0]    b_idx,
@@ -134,18 +148,20 @@ module node_unit #(
     reg [IW-1:0] vrun_q;                // vidx_q + 1, a register: no incrementer before port A's address
     localparam [IW-1:0] IDX_ONE = 1;
     reg          ground_q, ground_d;    // the pass under way is the ground pass
-    wire         stage_a, ground_a;     // stage A: a node of the pass (below)
+    // idx: the row (way 0's, the even bank's); idx1 way 1's (the odd bank's): the same row but
+    // in a fused step (FUSE), which takes the sweep's pairs; fused: a fused step's node
+    wire         stage_a, ground_a, fused_a;  // stage A: a node of the pass (below)
     wire [PAIR:0] pin_a, grab_a, has_a;
-    wire [IW-1:0] idx_a;
-    reg          stage_b, ground_b;     // stage B: a node of the pass, and how to write it
+    wire [IW-1:0] idx_a, idx1_a;
+    reg          stage_b, ground_b, fused_b;  // stage B: a node of the pass, and how to write it
     reg [PAIR:0] pin_b, grab_b, has_b;
-    reg [IW-1:0] idx_b;
-    reg          stage_c, ground_c;     // stage C
+    reg [IW-1:0] idx_b, idx1_b;
+    reg          stage_c, ground_c, fused_c;  // stage C
     reg [PAIR:0] pin_c, grab_c, has_c;
-    reg [IW-1:0] idx_c;
-    reg          pass_w, ground_w;      // stage W: the write
+    reg [IW-1:0] idx_c, idx1_c;
+    reg          pass_w, ground_w, fused_w;   // stage W: the write
     reg [PAIR:0] pin_w, grab_w, has_w;
-    reg [IW-1:0] idx_w;
+    reg [IW-1:0] idx_w, idx1_w;
 
     wire last = vidx_q == S_LAST;
     wire pass_start = verlet_start || (EN_GROUND && ground_start);
@@ -165,7 +181,7 @@ module node_unit #(
                 vidx_d = vrun_q;
                 if (last) running_d = 1'b0;
             end
-            if (pass_w && idx_w == S_LAST) done_d = 1'b1;  // the last node (row) is written
+            if (pass_w && !fused_w && idx_w == S_LAST) done_d = 1'b1;  // the last node (row) is written
         end
     end
 
@@ -191,6 +207,8 @@ module node_unit #(
         end
         if (stage_a) begin  // what the later stages need of the node
             idx_b    <= idx_a;
+            idx1_b   <= idx1_a;
+            fused_b  <= fused_a;
             ground_b <= ground_a;
             pin_b    <= pin_a;
             grab_b   <= grab_a;
@@ -198,6 +216,8 @@ module node_unit #(
         end
         if (stage_b) begin
             idx_c    <= idx_b;
+            idx1_c   <= idx1_b;
+            fused_c  <= fused_b;
             ground_c <= ground_b;
             pin_c    <= pin_b;
             grab_c   <= grab_b;
@@ -205,6 +225,8 @@ module node_unit #(
         end
         if (stage_c) begin
             idx_w    <= idx_c;
+            idx1_w   <= idx1_c;
+            fused_w  <= fused_c;
             ground_w <= ground_c;
             pin_w    <= pin_c;
             grab_w   <= grab_c;
@@ -214,38 +236,51 @@ module node_unit #(
 
     assign verlet_done = done_q;
 
+    // ---- the words a pass's step takes arrive now (arrive): its own walk's (running_q: node or
+    // row vidx_q), or with FUSE the fused sweep's pair read's (the rows chain_stream read, one
+    // a bank); with the nodes' flags, read with the words (assigned below) ----
+    wire          arrive, arr_fused, arr_ground;
+    wire [IW-1:0] arr_idx, arr_idx1;
+    wire [PAIR:0] arr_pin, arr_grab, arr_has;
+
     // ---- stage A: serial, the cycle port A's data arrive; ARCH = 1, the cycle after (stage R
     // registers the words first: the path from a block RAM's unregistered output through the
     // velocity's subtract set the pipelined builds' clock) ----
     generate
         if (ARCH) begin : g_stage_r
-            reg          stage_r_q, ground_r_q;
+            reg          stage_r_q, ground_r_q, fused_r_q;
             reg [PAIR:0] pin_r_q, grab_r_q, has_r_q;
-            reg [IW-1:0] idx_r_q;
+            reg [IW-1:0] idx_r_q, idx1_r_q;
             always @(posedge clk) begin
                 if (reset) stage_r_q <= 1'b0;
-                else stage_r_q <= running_q;
-                if (running_q) begin
-                    idx_r_q    <= vidx_q;
-                    ground_r_q <= ground_q;
-                    pin_r_q    <= v_pin;
-                    grab_r_q   <= v_grab;
-                    has_r_q    <= v_has;
+                else stage_r_q <= arrive;
+                if (arrive) begin
+                    idx_r_q    <= arr_idx;
+                    idx1_r_q   <= arr_idx1;
+                    fused_r_q  <= arr_fused;
+                    ground_r_q <= arr_ground;
+                    pin_r_q    <= arr_pin;
+                    grab_r_q   <= arr_grab;
+                    has_r_q    <= arr_has;
                 end
             end
             assign stage_a  = stage_r_q;
             assign idx_a    = idx_r_q;
+            assign idx1_a   = idx1_r_q;
+            assign fused_a  = fused_r_q;
             assign ground_a = ground_r_q;
             assign pin_a    = pin_r_q;
             assign grab_a   = grab_r_q;
             assign has_a    = has_r_q;
         end else begin : g_no_stage_r
-            assign stage_a  = running_q;
-            assign idx_a    = vidx_q;
-            assign ground_a = ground_q;
-            assign pin_a    = v_pin;
-            assign grab_a   = v_grab;
-            assign has_a    = v_has;
+            assign stage_a  = arrive;
+            assign idx_a    = arr_idx;
+            assign idx1_a   = arr_idx1;
+            assign fused_a  = arr_fused;
+            assign ground_a = arr_ground;
+            assign pin_a    = arr_pin;
+            assign grab_a   = arr_grab;
+            assign has_a    = arr_has;
         end
     endgenerate
 
@@ -317,6 +352,7 @@ module node_unit #(
     endgenerate
 
     // ---- PAIR: the pair read's pinned (or held) flags, one per bank ----
+    wire pair_pinned_e, pair_pinned_o, pair_held_e, pair_held_o;  // apart: the fused step tells them apart
     generate
         if (PAIR != 0) begin : g_pair_pins
             /* verilator lint_off UNUSEDSIGNAL */
@@ -324,17 +360,60 @@ module node_unit #(
             wire [IW:0] node_e = {pair_row_e, 1'b0}, node_o = {pair_row_o, 1'b1};
             /* verilator lint_on UNUSEDSIGNAL */
             wire ok_e = node_e < K_COUNT, ok_o = node_o < K_COUNT;
-            reg  pin_e_q, pin_o_q;
+            reg  pin_e_q, pin_o_q, held_e_q, held_o_q;
             always @(posedge clk)
                 if (pair_re) begin
-                    pin_e_q <= ok_e && (pinned_q[node_e[IW-1:0]] || (GRAB && grab_here && node_e[IW-1:0] == grab_idx));
-                    pin_o_q <= ok_o && (pinned_q[node_o[IW-1:0]] || (GRAB && grab_here && node_o[IW-1:0] == grab_idx));
+                    pin_e_q  <= ok_e && pinned_q[node_e[IW-1:0]];
+                    pin_o_q  <= ok_o && pinned_q[node_o[IW-1:0]];
+                    held_e_q <= ok_e && GRAB && grab_here && node_e[IW-1:0] == grab_idx;
+                    held_o_q <= ok_o && GRAB && grab_here && node_o[IW-1:0] == grab_idx;
                 end
-            assign pair_pin_e = pin_e_q;
-            assign pair_pin_o = pin_o_q;
+            assign pair_pinned_e = pin_e_q;
+            assign pair_pinned_o = pin_o_q;
+            assign pair_held_e   = held_e_q;
+            assign pair_held_o   = held_o_q;
+            assign pair_pin_e    = pin_e_q || held_e_q;
+            assign pair_pin_o    = pin_o_q || held_o_q;
         end else begin : g_no_pair_pins
-            assign pair_pin_e = 1'b0;
-            assign pair_pin_o = 1'b0;
+            assign pair_pinned_e = 1'b0;
+            assign pair_pinned_o = 1'b0;
+            assign pair_held_e   = 1'b0;
+            assign pair_held_o   = 1'b0;
+            assign pair_pin_e    = 1'b0;
+            assign pair_pin_o    = 1'b0;
+        end
+    endgenerate
+
+    // ---- what arrives for the pass's step (declared above) ----
+    generate
+        if (FUSE != 0) begin : g_fuse_arrive
+            // the fused sweep's read: registered with its rows, as the words arrive the cycle after
+            reg          fuse_q, has_o_q;
+            reg [IW-1:0] row_e_q, row_o_q;
+            always @(posedge clk) begin
+                fuse_q  <= !reset && pair_re && pair_fuse;
+                has_o_q <= pair_has_o;
+                row_e_q <= pair_row_e;
+                row_o_q <= pair_row_o;
+            end
+            assign arrive     = running_q || fuse_q;
+            assign arr_fused  = fuse_q;
+            assign arr_ground = !fuse_q && ground_q;
+            assign arr_idx    = fuse_q ? row_e_q : vidx_q;
+            assign arr_idx1   = fuse_q ? row_o_q : vidx_q;
+            assign arr_pin    = fuse_q ? {pair_pinned_o, pair_pinned_e} : v_pin;
+            assign arr_grab   = fuse_q ? {pair_held_o, pair_held_e} : v_grab;
+            assign arr_has    = fuse_q ? {has_o_q, 1'b1} : v_has;
+        end else begin : g_walk_arrive
+            assign arrive     = running_q;
+            assign arr_fused  = 1'b0;
+            assign arr_ground = ground_q;
+            assign arr_idx    = vidx_q;
+            assign arr_idx1   = vidx_q;
+            assign arr_pin    = v_pin;
+            assign arr_grab   = v_grab;
+            assign arr_has    = v_has;
+            wire unused_fuse = &{1'b0, pair_fuse, pair_has_o, pair_pinned_e, pair_pinned_o, pair_held_e, pair_held_o};
         end
     endgenerate
 
@@ -360,10 +439,19 @@ module node_unit #(
     wire           pass_we  = pass_w && !pin_w[0] && (!ground_w || (g_hit[0] && !grab_w[0]));
     /* verilator lint_off UNUSEDSIGNAL */
     wire [IW:0]    w_row    = {idx_w, 1'b0};  // PAIR: the written row's even and odd node (the top bit is past K)
-    wire [IW:0]    w_row1   = {idx_w, 1'b1};
+    wire [IW:0]    w_row1   = {idx1_w, 1'b1};
     /* verilator lint_on UNUSEDSIGNAL */
-    wire [IW-1:0]  widx     = pass_w ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
-    wire           we       = (pass_we || w_en) && {1'b0, widx} < K_COUNT;
+    // FUSE: a fused step's positions go through write port 2, its node of the colour the sweep
+    // does not move (the red one, of the first sweep's colour 0, the sweep writes through port 1
+    // when its result comes); it writes both nodes' previous positions (and clears their
+    // forces). RED_BANK: the bank of this unit's colour-0 nodes (node u K + x is colour x + u K
+    // mod 2). pos1: port 1 takes the step's way 0, as in any other pass.
+    localparam integer RED_I    = (UNIT_ID * K) % 2;
+    localparam [0:0]   RED_BANK = RED_I[0:0];
+    wire           pos1     = pass_w && !(FUSE != 0 && fused_w);
+    wire           swap2    = FUSE != 0 && pass_w && fused_w && RED_BANK;  // port 2 takes way 0 (the black node is even)
+    wire [IW-1:0]  widx     = pos1 ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
+    wire           we       = ((pos1 && pass_we) || w_en) && {1'b0, widx} < K_COUNT;
     wire           wprev    = pass_w || w_at_rest;
     // A PIN reaches the flags through a register (pin_pend_q): the bus's address decode then
     // ends at a flip-flop of the unit, not in the walk's flag lookup across the device. So
@@ -401,15 +489,23 @@ module node_unit #(
             assign w_pin = rest_node0 ? node0_pin_q : next_pin_q;
         end
     endgenerate
+    // the previous positions' port 1: the pass's way 0, else the init walk and loads
+    wire [IW-1:0]  pidx      = pass_w ? (PAIR != 0 ? w_row[IW-1:0] : idx_w) : w_idx;
+    wire           pwe       = (FUSE != 0 ? (pass_w ? pass_we : w_en && w_at_rest) : (pass_we || w_en) && wprev) && {1'b0, pidx} < K_COUNT;
     // the force: the Verlet pass consumes node idx_w's (each way's), the init walk and loads clear node w_idx's
     wire           acc_clear = (pass_w && !ground_w) || (w_en && w_at_rest);
-    // the second write port (PAIR): the pass's way 1, else the constraint pass's second write
+    // the second write port (PAIR): the pass's way 1 (FUSE, swap2: way 0), else the constraint pass's second write
     wire           pass_we2  = PAIR != 0 && pass_w && has_w[PAIR] && !pin_w[PAIR] && (!ground_w || (g_hit[PAIR] && !grab_w[PAIR]));
-    wire [IW-1:0]  widx2     = pass_w ? w_row1[IW-1:0] : w2_idx;
-    wire           we2       = PAIR != 0 && (pass_w ? pass_we2 : w2_en) && {1'b0, widx2} < K_COUNT;
+    wire [IW-1:0]  pidx2     = pass_w ? w_row1[IW-1:0] : w2_idx;
+    wire [IW-1:0]  widx2     = swap2 ? w_row[IW-1:0] : pidx2;
+    wire           we2       = PAIR != 0 && (pass_w ? (swap2 ? pass_we : pass_we2) : w2_en) && {1'b0, widx2} < K_COUNT;
+    wire           pwe2      = PAIR != 0 && pass_w && pass_we2 && {1'b0, pidx2} < K_COUNT;
     wire           acc_clear2 = PAIR != 0 && pass_w && !ground_w && has_w[PAIR];
     wire [DIM*W-1:0] wdata, wdata2;
     wire [DIM*W-1:0] b_pos_raw;  // port B before the written flags
+    // stage W's results, per lane and way (lane k at k (1 + PAIR) W, its way 1 W after): the
+    // fused sweep's words (FUSE)
+    wire [DIM*(1+PAIR)*W-1:0] step_pos, step_prev;
 
     genvar k;
     generate
@@ -419,12 +515,13 @@ module node_unit #(
                 , .AXIS(k)) u_lane (
                 .clk(clk), .reset(reset),
                 .a_re(a_re), .a_addr(a_addr), .b_addr(b_idx),
-                .we(we), .wprev(wprev), .widx(widx),
-                .acc_clear(acc_clear && {1'b0, widx} < K_COUNT), .acc_clear_idx(widx),
+                .we(we), .widx(widx), .pos1(pos1), .pwe(pwe), .pidx(pidx),
+                .acc_clear(acc_clear && {1'b0, pidx} < K_COUNT), .acc_clear_idx(pidx),
                 .acc_we(acc_we && {1'b0, w_idx} < K_COUNT), .acc_w(acc_w[k*W +: W]),
                 .pair_re(pair_re_i), .pair_row_e(pair_row_e_i), .pair_row_o(pair_row_o_i),
-                .we2(we2), .wprev2(pass_w), .acc_clear2(acc_clear2), .widx2(widx2), .w2_pos(w2_pos[k*W +: W]),
-                .stage_r(running_q), .stage_a(stage_a), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
+                .we2(we2), .widx2(widx2), .swap2(swap2), .pwe2(pwe2), .pidx2(pidx2),
+                .acc_clear2(acc_clear2), .w2_pos(w2_pos[k*W +: W]),
+                .stage_r(arrive), .stage_a(stage_a), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
                 .grab_w(grab_w),
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
@@ -435,7 +532,8 @@ module node_unit #(
                 .q_e(pair_pos_e[k*W +: W]), .q_o(pair_pos_o[k*W +: W]),
                 .qp_e(pair_prev_e[k*W +: W]), .qp_o(pair_prev_o[k*W +: W]),
                 .touch(touch[k*(1+PAIR) +: 1+PAIR]), .hit(hit[k*(1+PAIR) +: 1+PAIR]),
-                .wdata(wdata[k*W +: W]), .wdata2(wdata2[k*W +: W]));
+                .wdata(wdata[k*W +: W]), .wdata2(wdata2[k*W +: W]),
+                .step_pos(step_pos[k*(1+PAIR)*W +: (1+PAIR)*W]), .step_prev(step_prev[k*(1+PAIR)*W +: (1+PAIR)*W]));
         end
     endgenerate
 
@@ -516,6 +614,30 @@ module node_unit #(
         end
     endgenerate
     assign b_pos = b_ok_r ? b_pos_raw : {(DIM*W){1'b0}};
+
+    // ---- FUSE: stage W's results, the fused sweep's words ----
+    generate
+        if (FUSE != 0) begin : g_pass_out
+            genvar ax;
+            for (ax = 0; ax < DIM; ax = ax + 1) begin : g_ax
+                assign pass_pos_e[ax*W +: W]  = step_pos[ax*2*W +: W];
+                assign pass_pos_o[ax*W +: W]  = step_pos[ax*2*W + W +: W];
+                assign pass_prev_e[ax*W +: W] = step_prev[ax*2*W +: W];
+                assign pass_prev_o[ax*W +: W] = step_prev[ax*2*W + W +: W];
+            end
+            assign pass_pin_e  = pin_w[0] || grab_w[0];
+            assign pass_pin_o  = pin_w[PAIR] || grab_w[PAIR];
+            assign pass_held_e = grab_w[0];
+            assign pass_held_o = grab_w[PAIR];
+        end else begin : g_no_pass_out
+            assign pass_pos_e  = {(DIM*W){1'b0}};
+            assign pass_pos_o  = {(DIM*W){1'b0}};
+            assign pass_prev_e = {(DIM*W){1'b0}};
+            assign pass_prev_o = {(DIM*W){1'b0}};
+            assign {pass_pin_e, pass_pin_o, pass_held_e, pass_held_o} = 4'b0;
+            wire unused_step = &{1'b0, step_pos, step_prev};
+        end
+    endgenerate
 
     // ---- the write-back lanes (DEBUG) ----
     generate

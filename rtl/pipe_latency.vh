@@ -28,3 +28,4 @@ endfunction
 function integer spring_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps);
     spring_pipe_latency = sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 20;
 endfunction
+

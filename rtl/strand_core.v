@@ -161,8 +161,14 @@ module strand_core #(
     // PAIR: the pair reads of every unit (the pipelined constraint pass's)
     wire [M*DW-1:0] pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all;
     wire [M-1:0]    pair_pin_e_all, pair_pin_o_all;
+    // FUSE: the pair read is the Verlet step's (and its odd node exists); the step's results of every unit
+    wire            pair_fuse, pair_has_o;
+    wire [M*DW-1:0] pass_pos_e_all, pass_pos_o_all, pass_prev_e_all, pass_prev_o_all;
+    wire [M-1:0]    pass_pin_e_all, pass_pin_o_all, pass_held_e_all, pass_held_o_all;
     // (every other build)
-    wire unused_pair = &{1'b0, pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all, pair_pin_e_all, pair_pin_o_all};
+    wire unused_pair = &{1'b0, pair_pos_e_all, pair_pos_o_all, pair_prev_e_all, pair_prev_o_all, pair_pin_e_all, pair_pin_o_all,
+                         pass_pos_e_all, pass_pos_o_all, pass_prev_e_all, pass_prev_o_all, pass_pin_e_all, pass_pin_o_all,
+                         pass_held_e_all, pass_held_o_all};
     // a unit index past the last unit reads as 0 (the sequencer ignores it: no D past the end)
     wire          sel_ok      = {1'b0, rd_sel_q} < M_COUNT;
     wire [DW-1:0] seq_rd_pos  = sel_ok ? a_pos_all[rd_sel_q * DW +: DW] : {DW{1'b0}};
@@ -206,6 +212,12 @@ module strand_core #(
                 .pair_prev_e_all(PROJECTION ? pair_prev_e_all : {(M*DW){1'b0}}),
                 .pair_prev_o_all(PROJECTION ? pair_prev_o_all : {(M*DW){1'b0}}),
                 .pair_pin_e_all(pair_pin_e_all), .pair_pin_o_all(pair_pin_o_all),
+                .pair_fuse(pair_fuse), .pair_has_o(pair_has_o),
+                .pass_pos_e_all(pass_pos_e_all), .pass_pos_o_all(pass_pos_o_all),
+                .pass_prev_e_all(PROJECTION ? pass_prev_e_all : {(M*DW){1'b0}}),
+                .pass_prev_o_all(PROJECTION ? pass_prev_o_all : {(M*DW){1'b0}}),
+                .pass_pin_e_all(pass_pin_e_all), .pass_pin_o_all(pass_pin_o_all),
+                .pass_held_e_all(pass_held_e_all), .pass_held_o_all(pass_held_o_all),
                 .wr_en(seq_we), .wr_idx_all(seq_widx), .wr_pos_all(seq_wpos),
                 .wr2_en(seq2_we), .wr2_idx_all(seq2_widx), .wr2_pos_all(seq2_wpos),
                 .uidx(c_uidx), .nidx(c_nidx), .counter(c_counter), .fec(fec));
@@ -303,6 +315,8 @@ module strand_core #(
                 assign seq_wpos[u*DW +: DW]  = c_wr_pos;
             end
             assign pair_re        = 1'b0;
+            assign pair_fuse      = 1'b0;
+            assign pair_has_o     = 1'b0;
             assign pair_row_e_all = {(M*IW){1'b0}};
             assign pair_row_o_all = {(M*IW){1'b0}};
             assign seq2_we        = {M{1'b0}};
@@ -373,6 +387,11 @@ module strand_core #(
                 .pair_pos_e(pair_pos_e_all[u*DW +: DW]), .pair_pos_o(pair_pos_o_all[u*DW +: DW]),
                 .pair_prev_e(pair_prev_e_all[u*DW +: DW]), .pair_prev_o(pair_prev_o_all[u*DW +: DW]),
                 .pair_pin_e(pair_pin_e_all[u]), .pair_pin_o(pair_pin_o_all[u]),
+                .pair_fuse(pair_fuse), .pair_has_o(pair_has_o),
+                .pass_pos_e(pass_pos_e_all[u*DW +: DW]), .pass_pos_o(pass_pos_o_all[u*DW +: DW]),
+                .pass_prev_e(pass_prev_e_all[u*DW +: DW]), .pass_prev_o(pass_prev_o_all[u*DW +: DW]),
+                .pass_pin_e(pass_pin_e_all[u]), .pass_pin_o(pass_pin_o_all[u]),
+                .pass_held_e(pass_held_e_all[u]), .pass_held_o(pass_held_o_all[u]),
                 .w2_en(seq2_we[u]), .w2_idx(seq2_widx[u*IW +: IW]), .w2_pos(seq2_wpos[u*DW +: DW]),
                 .wb_valid(wb_valid_all[u*LANES +: LANES]), .wb_idx(wb_idx_all[u*LANES*IW +: LANES*IW]),
                 .wb_pos(wb_pos_all[u*LANES*DW +: LANES*DW]));

@@ -8,6 +8,11 @@
 // it, e.g. W_must_be_8_to_32), and `hierarchy -check` stops with that name.
 `ifndef STRAND_DEFS_VH
 `define STRAND_DEFS_VH
+
+// FUSE (a chain's pipelined centred pass): the first sweep of a pass takes its words from the
+// units' Verlet step instead of the memories, this many cycles later: node_unit's stages R, A,
+// B and C (model/timing.c hw_fuse_lag).
+`define STRAND_FUSE_LAG 4
 `ifdef SYNTHESIS
 `define STRAND_CHECK(label, cond, msg) generate if (!(cond)) begin : label strand_bad_parameter label (); end endgenerate
 `else

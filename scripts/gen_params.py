@@ -99,6 +99,8 @@ DERIVED = [
     ("SW", "clog2_1(SUBSTEPS)", "substep counter bits"),
     ("PAIR", "ARCH && !GRAPH && EN_CONSTRAINTS ? 1 : 0",
      "a chain's pipelined constraint pass: every unit reads a pair of neighbouring nodes and writes up to two a clock, so its node memories are two banks (even and odd nodes)"),
+    ("FUSE", "PAIR == 1 && RULE == 0 ? 1 : 0",
+     "a chain's pipelined centred pass takes the Verlet step into its first sweep: the units step each pair of nodes as the sweep reads it and hand the new positions to the sweep, so a substep has no Verlet pass of its own"),
     ("WB", "M * (1 + PAIR)", "the write-back lanes of the dbg port: one a unit, two with PAIR (one a write port)"),
     ("DBG_W", "DEBUG ? 3 + 2 + UW + IW + CW + WB * (1 + IW + 3 * W) : 1",
      "the dbg port: {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} per write-back lane, or 1"),
