@@ -94,6 +94,13 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
             c->st_pos[b] = calloc((size_t)n, sizeof *c->st_pos[b]);
             if (!c->st_pend[b] || !c->st_pos[b]) return false;
         }
+        c->st_lag = hp->fuse ? (int)hw_fuse_lag() : 0;
+        if (hp->fuse) {
+            c->fz_write = calloc((size_t)n, sizeof *c->fz_write);
+            c->fz_pos = calloc((size_t)n, sizeof *c->fz_pos);
+            c->fz_prev = calloc((size_t)n, sizeof *c->fz_prev);
+            if (!c->fz_write || !c->fz_pos || !c->fz_prev) return false;
+        }
     }
     if (graph_streams(hp)) {
         c->gs_colour_end = calloc((size_t)hp->e_rods, sizeof *c->gs_colour_end);
@@ -114,6 +121,11 @@ void cyc_free(cyc_model *c)
         c->st_pend[b] = NULL;
         c->st_pos[b] = NULL;
     }
+    free(c->fz_write);
+    free(c->fz_pos);
+    free(c->fz_prev);
+    c->fz_write = NULL;
+    c->fz_pos = c->fz_prev = NULL;
     free(c->gs_colour_end);
     free(c->gs_ring);
     c->gs_colour_end = NULL;
@@ -237,7 +249,7 @@ static void reset_all(cyc_model *c)
         c->wb_idx[l] = 0;
         c->wb_x[l] = c->wb_y[l] = c->wb_z[l] = 0;
     }
-    c->st_running = c->st_done = false;
+    c->st_running = c->st_done = c->st_fused = false;
     c->sp_running = c->sp_done = false;
     c->sp_t = c->sp_counter = 0;
     c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
@@ -420,14 +432,66 @@ static void stream_swap_pending(cyc_model *c, int bank)
         }
 }
 
+/* FUSE: the fused sweep's Verlet step (node_unit's stage W, as the separate pass: verlet_node()
+   then mouse_node()), every node's, from the storage as the sweep starts (it reads each pair
+   before any write of it: the step writes a pair as it leaves stage W, and the sweep's own
+   writes come later). The storage is left as it was, the results in fz_*. */
+static void fuse_step_plan(cyc_model *c)
+{
+    const int n = c->hp.m * c->hp.k;
+    sim_fx *s = &c->s;
+    for (int a = 0; a < 3; a++) s->mouse[a] = c->mouse_q[a];
+    s->mouse_down = c->mouse_down_q;
+    for (int i = 0; i < n; i++) {
+        fx_t old_pos[3], old_prev[3];
+        memcpy(old_pos, s->pos[i], sizeof old_pos);
+        memcpy(old_prev, s->prev[i], sizeof old_prev);
+        c->fz_write[i] = sim_fx_verlet_node(s, i);
+        if (c->fz_write[i] && c->hp.en_mouse && !c->hp.grab) sim_fx_mouse_node(s, i);
+        memcpy(c->fz_pos[i], s->pos[i], sizeof c->fz_pos[i]);
+        memcpy(c->fz_prev[i], s->prev[i], sizeof c->fz_prev[i]);
+        memcpy(s->pos[i], old_pos, sizeof old_pos);
+        memcpy(s->prev[i], old_prev, sizeof old_prev);
+    }
+}
+
+/* FUSE: the Verlet step's writes of pair j (stream positions 2j and 2j+1 of every unit), as it
+   leaves stage W: both nodes' previous positions and force (cleared); the position of the node
+   of colour 1 (the sweep writes the other when its result comes) through write port 2. */
+static void fuse_step_write(cyc_model *c, bool *written, int j)
+{
+    const int k = c->hp.k;
+    if (j < 0 || j >= (k + 1) / 2) return;
+    for (int u = 0; u < c->hp.m; u++)
+        for (int p = 2 * j; p <= 2 * j + 1 && p < k; p++) {
+            const int x = u % 2 ? k - 1 - p : p, node = u * k + x;
+            for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
+            if (!c->fz_write[node]) continue; /* pinned */
+            memcpy(c->s.prev[node], c->fz_prev[node], sizeof c->s.prev[node]);
+            if (node % 2 == 1) {
+                memcpy(c->s.pos[node], c->fz_pos[node], sizeof c->s.pos[node]);
+                lane_write_port(c, written, u, 1, x, node);
+            }
+        }
+}
+
 static void stream_plan(cyc_model *c)
 {
     const int n = c->hp.m * c->hp.k, colour = c->st_colour;
     sim_fx *s = &c->s;
     bool *pend = c->st_pend[colour];
     fx_t (*pos)[3] = c->st_pos[colour];
+    fx_t (*saved)[3] = NULL;
     stream_swap_pending(c, !colour); /* the storage as this sweep reads it */
     for (int i = 0; i < n; i++) pend[i] = false;
+    if (c->st_fused) { /* the positions the Verlet step gives, in place while the sweep is planned */
+        fuse_step_plan(c);
+        saved = c->st_pos[!colour]; /* (nothing of the other colour is pending: the last sweep has landed) */
+        for (int i = 0; i < n; i++) {
+            memcpy(saved[i], s->pos[i], sizeof saved[i]);
+            memcpy(s->pos[i], c->fz_pos[i], sizeof s->pos[i]);
+        }
+    }
     if (!c->hp.rule) {
         for (int i = colour; i < n; i += 2) {
             fx_t old[3];
@@ -435,6 +499,10 @@ static void stream_plan(cyc_model *c)
             if (sim_fx_centred_node(s, i)) {
                 pend[i] = true;
                 memcpy(pos[i], s->pos[i], sizeof pos[i]);
+            } else if (c->st_fused && (!c->sc.pinned[i] || s->grabbed == i)) {
+                /* the step did not write it: where the step put it (held: on the pointer) */
+                pend[i] = true;
+                memcpy(pos[i], old, sizeof pos[i]);
             }
             memcpy(s->pos[i], old, sizeof old);
         }
@@ -463,6 +531,8 @@ static void stream_plan(cyc_model *c)
         }
     }
     stream_swap_pending(c, !colour); /* back: those writes land in their cycles */
+    if (saved)
+        for (int i = 0; i < n; i++) memcpy(s->pos[i], saved[i], sizeof s->pos[i]);
 }
 
 /* chain_stream: the writes of slot j (in cycle j + LP + 3 of its sweep) of the sweep of this
@@ -626,8 +696,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const bool scan_end = hp->grab && c->phase == PH_GRAB && c->scan_i == n;
     const bool substep_start = (hp->grab ? scan_end : frame_start) || (substep_end && !last_substep);
     const bool force_start = substep_start && hp->en_springs;
-    const bool verlet_start = (substep_start && !hp->en_springs) || (c->phase == PH_FORCE && force_done);
-    const bool seq_start = verlet_end && hp->en_constraints;
+    /* FUSE: no Verlet pass; the constraint pass starts in its place and takes the step */
+    const bool body_start = (substep_start && !hp->en_springs) || (c->phase == PH_FORCE && force_done);
+    const bool verlet_start = body_start && !hp->fuse;
+    const bool seq_start = hp->fuse ? body_start : verlet_end && hp->en_constraints;
 
     /* node_unit port B: every unit registers the word it read last cycle (b_pos_q) and
      * samples node rd_n before this edge's writes. */
@@ -690,8 +762,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     /* chain_stream: a sweep's writes are planned as it starts and land in their cycles, the
        previous sweep's (SP cycles along) while this one starts. */
     if (chain_streams(hp) && c->st_running) {
+        const int lag = c->st_fused ? c->st_lag : 0;
         if (c->st_t == 0) stream_plan(c);
-        stream_write(c, written, c->st_colour, c->st_t - 3 - c->lp);
+        if (c->st_fused) fuse_step_write(c, written, c->st_t - 2 - lag); /* pair j leaves stage W with slot j */
+        stream_write(c, written, c->st_colour, c->st_t - 3 - c->lp - lag);
         stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 3 - c->lp);
     }
     /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
@@ -729,18 +803,22 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
        ITER times. */
     if (chain_streams(hp) && hp->en_constraints) {
         const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
-        const int sweep = last ? c->st_last : c->st_period;
-        const bool slot = c->st_running && c->st_t >= 2 && c->st_t <= k / 2 + 2; /* slots 0 .. K/2 */
+        /* FUSE: the fused sweep's slots (ts = t - lag), and its end, lag cycles later */
+        const int lag = c->st_fused ? c->st_lag : 0, ts = c->st_t - lag;
+        const int sweep = last ? c->st_last : c->st_period + lag;
+        const bool slot = c->st_running && ts >= 2 && ts <= k / 2 + 2; /* slots 0 .. K/2 */
         const bool sweep_end = c->st_running && c->st_t == sweep - 1;
         /* the count restarts at the sweep's first slot: it reaches K/2 + 1 (FEC) even when the
            last slot issues in the sweep's last cycle, and keeps it until the next sweep's first */
-        const int counter_next = !slot ? c->st_counter : c->st_t == 2 ? 1 : c->st_counter + 1;
+        const int counter_next = !slot ? c->st_counter : ts == 2 ? 1 : c->st_counter + 1;
         c->st_done = sweep_end && last;
         if (seq_start && !c->st_running) {
             c->st_running = true;
+            c->st_fused = hp->fuse;
             c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
         } else if (sweep_end) {
             c->st_t = 0;
+            c->st_fused = false;
             c->st_counter = counter_next;
             if (last) c->st_running = false;
             if (c->st_colour) c->st_iter++;
@@ -848,7 +926,8 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->ground_d = ground_d_next;
     }
 
-    /* frame_ctrl's FSM. */
+    /* frame_ctrl's FSM. FUSE: the phase after FORCE (or the frame's start) is CONSTRAIN. */
+    const int body_phase = hp->fuse ? PH_CONSTRAIN : PH_VERLET;
     const int phase_before = c->phase;
     bool frame_end = false;
     c->frame_done = false;
@@ -860,7 +939,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             for (int a = 0; a < 3; a++) c->init_pos[a] = a < hp->dim ? c->start[a] : 0;
             walk_ahead(c);
         } else if (in->step) {
-            c->phase = hp->grab ? PH_GRAB : hp->en_springs ? PH_FORCE : PH_VERLET;
+            c->phase = hp->grab ? PH_GRAB : hp->en_springs ? PH_FORCE : body_phase;
             c->scan_i = 0;
             c->substep = 0;
             c->mouse_q[0] = from_word(f, in->mouse_x);
@@ -881,14 +960,14 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         if (c->init_count++ == n - 1) c->phase = PH_IDLE;
         break;
     case PH_FORCE:
-        if (force_done) c->phase = PH_VERLET;
+        if (force_done) c->phase = body_phase;
         break;
     case PH_GRAB: /* grab_scan: the scan ends by grabbing or releasing (grab_update) */
         if (scan_end) {
             for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;
             sim_fx_grab_update(&c->s);
-            c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
+            c->phase = hp->en_springs ? PH_FORCE : body_phase;
         } else {
             c->scan_i++;
         }
@@ -905,7 +984,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->frame_done = true;
             frame_end = true;
         } else {
-            c->phase = hp->en_springs ? PH_FORCE : PH_VERLET;
+            c->phase = hp->en_springs ? PH_FORCE : body_phase;
             c->substep++;
         }
     }

@@ -120,6 +120,14 @@ typedef struct {
     int st_t, st_colour, st_iter, st_counter;
     bool *st_pend[2];      /* per node: written by the sweep of this colour */
     fx_t (*st_pos[2])[3];  /* its new position */
+    /* FUSE: the first sweep of a pass is fused (st_fused): its slots are st_lag cycles later
+       (node_unit's stages R, A, B, C) and it takes the Verlet step, planned as it starts (every
+       node's step, fz_*: whether the step writes it, its new position and previous position,
+       from the storage then) and written as each pair leaves stage W */
+    bool st_fused;
+    int st_lag;
+    bool *fz_write;
+    fx_t (*fz_pos)[3], (*fz_prev)[3];
     /* spring_stream (ARCH = 1 with EN_SPRINGS): one sweep; every force of the pass is
        gathered when it starts (nothing reads a force until the Verlet pass after it) */
     int lsp;     /* spring_force_pipe's latency */

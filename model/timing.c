@@ -117,18 +117,26 @@ long hw_spring_pass(const hw_params *hp)
     return 1 + springs * (hw_spring_latency(hp) + 5); /* pair_sequencer SPRING: as pairwise, per link */
 }
 
+/* FUSE: the fused sweep's words come from node_unit's Verlet step, its stages R, A, B and C
+   after their read, instead of the memories' (rtl/strand_defs.vh STRAND_FUSE_LAG) */
+long hw_fuse_lag(void) { return 4; }
+
 /* The terms of a substep and of a frame. */
 long hw_pass_steps(const hw_params *hp) { return hp->pair ? (hp->k + 1) / 2 : hp->k; }
 /* node_unit: K nodes (PAIR: K/2 rows, rounded up) through a four-stage pass (the last written 4
    cycles after its read; 5 with ARCH = 1, whose stage R registers the words first), FV; with
    constraints the sequencer starts the cycle after */
 static long pass_stages(const hw_params *hp) { return hp->arch ? 5 : 4; }
-static long verlet_phase(const hw_params *hp) { return hw_pass_steps(hp) + pass_stages(hp) + (hp->en_constraints ? 1 : 0); }
+/* FUSE: no Verlet pass, the first sweep takes the step */
+static long verlet_phase(const hw_params *hp)
+{
+    return hp->fuse ? 0 : hw_pass_steps(hp) + pass_stages(hp) + (hp->en_constraints ? 1 : 0);
+}
 static long constrain_phase(const hw_params *hp)
 {
     if (!hp->en_constraints) return 0;
-    if (chain_streams(hp)) /* 2 ITER sweeps, the last one to its drain */
-        return (2L * hp->iter - 1) * hw_stream_period(hp) + hw_stream_last(hp);
+    if (chain_streams(hp)) /* 2 ITER sweeps, the last one to its drain; FUSE: the first one lag cycles longer */
+        return (2L * hp->iter - 1) * hw_stream_period(hp) + hw_stream_last(hp) + (hp->fuse ? hw_fuse_lag() : 0);
     return hp->iter * hw_constraint_pass(hp);
 }
 static long spring_phase(const hw_params *hp) { return hp->en_springs ? hw_spring_pass(hp) : 0; }
@@ -143,7 +151,7 @@ long hw_cycles_per_frame(const hw_params *hp)
 
 int hw_timing_text(const hw_params *hp, char *out, int len)
 {
-    char pipe[320] = "", last[96] = "", steps[160] = "";
+    char pipe[320] = "", last[96] = "", steps[160] = "", verlet[96] = "";
     /* a pipelined chain (PAIR) steps two nodes a clock, one of each bank, in its Verlet and ground passes */
     const char *steps_term = hp->pair ? "ceil(K/2)" : "K";
     if (hp->arch) /* the pipes' root and divider: LSQ and LDV, BITS + 2 with one iteration a stage */
@@ -151,6 +159,9 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                  hw_sqrt_pipe_latency(hp), hw_div_pipe_latency(hp));
     if (chain_streams(hp) && hp->en_constraints) /* the pass's last sweep runs to its drain */
         snprintf(last, sizeof last, "; a substep's last sweep SL = K/2 + LP + 4 = %ld", hw_stream_last(hp));
+    if (!hp->fuse)
+        snprintf(verlet, sizeof verlet, "Verlet (%s + %s with constraints, else K + %s) + ", steps_term, hp->arch ? "6" : "5",
+                 hp->arch ? "5" : "4");
     if (hp->arch && hp->en_constraints)
         snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld%s\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
                  hp->projection ? "2 LSQ + LDV + 28" : "LSQ + LDV + 11", hw_toward_pipe_latency(hp), steps);
@@ -160,7 +171,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "%s"
                     "constraint pass = %s = %ld%s\n"
                     "spring pass = %s = %ld\n"
-                    "substep = Verlet (%s + %s with constraints, else K + %s) + %s [+ spring pass] [+ ground %s + %s] = %ld\n"
+                    "substep = %s%s [+ spring pass] [+ ground %s + %s] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
@@ -170,8 +181,9 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
                     chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)" : "1 + links (LS + 5)",
-                    hw_spring_pass(hp), steps_term, hp->arch ? "6" : "5", hp->arch ? "5" : "4",
-                    chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes", steps_term, hp->arch ? "5" : "4",
+                    hw_spring_pass(hp), verlet,
+                    hp->fuse ? "ITER passes, the Verlet step in the first sweep ((2 ITER - 1) SP + SL + 4)"
+                    : chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes", steps_term, hp->arch ? "5" : "4",
                     verlet_phase(hp) + constrain_phase(hp) + spring_phase(hp) + ground_phase(hp),
                     hw_cycles_per_frame(hp));
 }

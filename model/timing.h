@@ -34,6 +34,7 @@ long hw_stream_period(const hw_params *hp);
    build) ceil(K / 2) rows of two, one node of each bank a clock */
 long hw_pass_steps(const hw_params *hp);
 long hw_stream_last(const hw_params *hp);
+long hw_fuse_lag(void);
 bool hw_stream_slot_bound(const hw_params *hp); /* sweep period set by the slots (NS + 2), not the pipe */
 /* One constraint pass (chain_sequencer, pair_sequencer or chain_stream), start to done, without the start cycle. */
 long hw_constraint_pass(const hw_params *hp);
