@@ -127,10 +127,10 @@ long hw_pass_steps(const hw_params *hp) { return hp->pair ? (hp->k + 1) / 2 : hp
    cycles after its read; 5 with ARCH = 1, whose stage R registers the words first), FV; with
    constraints the sequencer starts the cycle after */
 static long pass_stages(const hw_params *hp) { return hp->arch ? 5 : 4; }
-/* FUSE: no Verlet pass, the first sweep takes the step */
+/* FUSE: no Verlet pass, the first sweep takes the step: one cycle, the sequencer's start */
 static long verlet_phase(const hw_params *hp)
 {
-    return hp->fuse ? 0 : hw_pass_steps(hp) + pass_stages(hp) + (hp->en_constraints ? 1 : 0);
+    return hp->fuse ? 1 : hw_pass_steps(hp) + pass_stages(hp) + (hp->en_constraints ? 1 : 0);
 }
 static long constrain_phase(const hw_params *hp)
 {
@@ -159,7 +159,9 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                  hw_sqrt_pipe_latency(hp), hw_div_pipe_latency(hp));
     if (chain_streams(hp) && hp->en_constraints) /* the pass's last sweep runs to its drain */
         snprintf(last, sizeof last, "; a substep's last sweep SL = K/2 + LP + 4 = %ld", hw_stream_last(hp));
-    if (!hp->fuse)
+    if (hp->fuse)
+        snprintf(verlet, sizeof verlet, "1 + ");
+    else
         snprintf(verlet, sizeof verlet, "Verlet (%s + %s with constraints, else K + %s) + ", steps_term, hp->arch ? "6" : "5",
                  hp->arch ? "5" : "4");
     if (hp->arch && hp->en_constraints)

@@ -92,6 +92,7 @@ module node_lane #(
     input  wire          pass_w,     //   in stage W: write its result
     input  wire          ground_w,   //   the ground pass
     input  wire [PAIR:0] grab_w,     //   the way's node is the grabbed one (GRAB)
+    input  wire [PAIR:0] pin_w,      //   the way's node is pinned (FUSE: the sweep gets it unmoved)
     input  wire          w_pin,      // an external write to a pinned node: at rest
     input  wire [W-1:0]  w_pos,      // external write data
     input  wire [W-1:0]  w_prev,
@@ -119,14 +120,15 @@ module node_lane #(
     output wire [PAIR:0] hit,        // stage W, AXIS = GROUND_AXIS: past the boundary
     output wire [W-1:0]  wdata,      // what this axis writes now through write port 1 (the write-back lane shows it)
     output wire [W-1:0]  wdata2,     //   and through write port 2 (PAIR)
-    output wire [(1+PAIR)*W-1:0] step_pos,   // stage W, each way: the step's position (the grabbed node: the pointer)
-    output wire [(1+PAIR)*W-1:0] step_prev   //   and previous position
+    output wire [(1+PAIR)*W-1:0] sweep_pos,  // FUSE, stage W, each way: the node as the step leaves it (a
+    output wire [(1+PAIR)*W-1:0] sweep_prev  //   pinned one unmoved): the fused sweep's words
 );
 
     localparam integer NW = 1 + PAIR;  // ways: nodes a pass takes a clock
 
     // ---- storage ----
     wire [NW*W-1:0] np_way, gr_way, grp_way;          // stage W: each way's results (below)
+    wire [NW*W-1:0] step_pos;                         //   the step's position (the grabbed node: the pointer)
     wire [W-1:0]    qa_e, qa_o;                     // the force memory's banks
     wire [W-1:0]    wprev_data, wprev_data2;
     assign wdata      = pos1 ? (EN_GROUND && ground_w ? gr_way[0 +: W] : step_pos[0 +: W]) : w_pos;
@@ -234,7 +236,19 @@ module node_lane #(
             assign touch[wy] = touch_w;
             assign np_way[wy*W +: W] = np;
             assign step_pos[wy*W +: W]  = GRAB && grab_w[wy] ? mouse : n_w;
-            assign step_prev[wy*W +: W] = np;
+            if (FUSE != 0) begin : g_sweep_words
+                // a pinned node is not stepped: its previous position comes along for PROJECTION
+                reg [W-1:0] qp_c, qp_w;
+                always @(posedge clk) begin
+                    if (stage_b) qp_c <= qp_b;
+                    if (stage_c) qp_w <= qp_c;
+                end
+                assign sweep_pos[wy*W +: W]  = pin_w[wy] ? q_w : step_pos[wy*W +: W];
+                assign sweep_prev[wy*W +: W] = pin_w[wy] ? qp_w : np;
+            end else begin : g_no_sweep_words
+                assign sweep_pos[wy*W +: W]  = {W{1'b0}};
+                assign sweep_prev[wy*W +: W] = {W{1'b0}};
+            end
             assign gr_way[wy*W +: W]  = g_w;
             assign grp_way[wy*W +: W] = gp_w;
 
@@ -347,6 +361,9 @@ module node_lane #(
             wire unused_friction = &{1'b0, friction};
         end else begin : g_unused_boundary
             wire unused_boundary = &{1'b0, ground};
+        end
+        if (FUSE == 0) begin : g_unused_pin
+            wire unused_pin = &{1'b0, pin_w};
         end
         if (!ARCH) begin : g_unused_stage_r
             wire unused_stage_r = &{1'b0, stage_r};

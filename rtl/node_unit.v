@@ -522,7 +522,7 @@ module node_unit #(
                 .we2(we2), .widx2(widx2), .swap2(swap2), .pwe2(pwe2), .pidx2(pidx2),
                 .acc_clear2(acc_clear2), .w2_pos(w2_pos[k*W +: W]),
                 .stage_r(arrive), .stage_a(stage_a), .stage_b(stage_b), .stage_c(stage_c), .pass_w(pass_w), .ground_w(ground_w),
-                .grab_w(grab_w),
+                .grab_w(grab_w), .pin_w(pin_w),
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
                 .gdt2(gdt2[k*W +: W]), .damping(damping), .impulse(impulse),
@@ -533,7 +533,7 @@ module node_unit #(
                 .qp_e(pair_prev_e[k*W +: W]), .qp_o(pair_prev_o[k*W +: W]),
                 .touch(touch[k*(1+PAIR) +: 1+PAIR]), .hit(hit[k*(1+PAIR) +: 1+PAIR]),
                 .wdata(wdata[k*W +: W]), .wdata2(wdata2[k*W +: W]),
-                .step_pos(step_pos[k*(1+PAIR)*W +: (1+PAIR)*W]), .step_prev(step_prev[k*(1+PAIR)*W +: (1+PAIR)*W]));
+                .sweep_pos(step_pos[k*(1+PAIR)*W +: (1+PAIR)*W]), .sweep_prev(step_prev[k*(1+PAIR)*W +: (1+PAIR)*W]));
         end
     endgenerate
 
