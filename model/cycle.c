@@ -99,7 +99,8 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
             c->fz_write = calloc((size_t)n, sizeof *c->fz_write);
             c->fz_pos = calloc((size_t)n, sizeof *c->fz_pos);
             c->fz_prev = calloc((size_t)n, sizeof *c->fz_prev);
-            if (!c->fz_write || !c->fz_pos || !c->fz_prev) return false;
+            c->fz_swap = calloc((size_t)n, sizeof *c->fz_swap);
+            if (!c->fz_write || !c->fz_pos || !c->fz_prev || !c->fz_swap) return false;
         }
     }
     if (graph_streams(hp)) {
@@ -124,8 +125,9 @@ void cyc_free(cyc_model *c)
     free(c->fz_write);
     free(c->fz_pos);
     free(c->fz_prev);
+    free(c->fz_swap);
     c->fz_write = NULL;
-    c->fz_pos = c->fz_prev = NULL;
+    c->fz_pos = c->fz_prev = c->fz_swap = NULL;
     free(c->gs_colour_end);
     free(c->gs_ring);
     c->gs_colour_end = NULL;
@@ -481,15 +483,18 @@ static void stream_plan(cyc_model *c)
     sim_fx *s = &c->s;
     bool *pend = c->st_pend[colour];
     fx_t (*pos)[3] = c->st_pos[colour];
-    fx_t (*saved)[3] = NULL;
+    fx_t (*saved)[3] = NULL, (*saved_prev)[3] = NULL;
     stream_swap_pending(c, !colour); /* the storage as this sweep reads it */
     for (int i = 0; i < n; i++) pend[i] = false;
-    if (c->st_fused) { /* the positions the Verlet step gives, in place while the sweep is planned */
+    if (c->st_fused) { /* what the Verlet step gives, in place while the sweep is planned */
         fuse_step_plan(c);
         saved = c->st_pos[!colour]; /* (nothing of the other colour is pending: the last sweep has landed) */
+        saved_prev = c->fz_swap;
         for (int i = 0; i < n; i++) {
             memcpy(saved[i], s->pos[i], sizeof saved[i]);
             memcpy(s->pos[i], c->fz_pos[i], sizeof s->pos[i]);
+            memcpy(saved_prev[i], s->prev[i], sizeof saved_prev[i]);
+            memcpy(s->prev[i], c->fz_prev[i], sizeof s->prev[i]);
         }
     }
     if (!c->hp.rule) {
@@ -532,7 +537,10 @@ static void stream_plan(cyc_model *c)
     }
     stream_swap_pending(c, !colour); /* back: those writes land in their cycles */
     if (saved)
-        for (int i = 0; i < n; i++) memcpy(s->pos[i], saved[i], sizeof s->pos[i]);
+        for (int i = 0; i < n; i++) {
+            memcpy(s->pos[i], saved[i], sizeof s->pos[i]);
+            memcpy(s->prev[i], saved_prev[i], sizeof s->prev[i]);
+        }
 }
 
 /* chain_stream: the writes of slot j (in cycle j + LP + 3 of its sweep) of the sweep of this
@@ -585,7 +593,7 @@ bool cyc_stream_write_due(const cyc_model *c)
     if (!chain_streams(&c->hp) || !c->st_running) return false;
     for (int u = 0; u < c->hp.m; u++) {
         int x[2], port[2];
-        if (stream_slot_nodes(c, u, c->st_colour, c->st_t - 3 - c->lp, x, port) ||
+        if (stream_slot_nodes(c, u, c->st_colour, c->st_t - 3 - c->lp - (c->st_fused ? c->st_lag : 0), x, port) ||
             stream_slot_nodes(c, u, !c->st_colour, c->st_t + c->st_period - 3 - c->lp, x, port))
             return true;
     }

@@ -128,6 +128,7 @@ typedef struct {
     int st_lag;
     bool *fz_write;
     fx_t (*fz_pos)[3], (*fz_prev)[3];
+    fx_t (*fz_swap)[3];  /* the storage's previous positions while the sweep is planned */
     /* spring_stream (ARCH = 1 with EN_SPRINGS): one sweep; every force of the pass is
        gathered when it starts (nothing reads a force until the Verlet pass after it) */
     int lsp;     /* spring_force_pipe's latency */

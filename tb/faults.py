@@ -109,6 +109,10 @@ FAULTS["odd_pin"] = [
     ("node_unit.v", r"^            assign v_pin  = \{q_pin1, q_pin\};\n",
      "            assign v_pin  = {q_pin, q_pin};  // planted fault: the odd node takes the even one's pin\n"
      "            wire unused_fault = &{1'b0, q_pin1};\n"),
+    # FUSE: the fused sweep's step (the same row of two nodes, read by the sweep)
+    ("node_unit.v", r"^            assign arr_pin    = fuse_q \? \{pair_pinned_o, pair_pinned_e\} : v_pin;\n",
+     "            assign arr_pin    = fuse_q ? {pair_pinned_e, pair_pinned_e} : v_pin;  // planted fault\n"
+     "            wire unused_fault_fuse = &{1'b0, pair_pinned_o};\n"),
 ]
 
 # frame_ctrl: CMD beside a step wins (the priority before the step's was given first), so a

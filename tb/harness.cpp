@@ -323,12 +323,14 @@ bool Run::cycle(const cyc_inputs &in) {
         if (m.fec) r_.predicted_fault = cyc_;
     }
     // boundary: the first sweep ends a cycle early, so the RTL shows the next colour in
-    // the cycle the model spends in the sweep's last cycle
-    if (o_.expect == "boundary" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == hw_stream_period(&hp_) - 1)
+    // the cycle the model spends in the sweep's last cycle (FUSE: the fused sweep's, lag longer)
+    const int first_lag = model_.st_fused ? model_.st_lag : 0;
+    if (o_.expect == "boundary" && r_.predicted_fault < 0 && model_.st_running &&
+        model_.st_t == hw_stream_period(&hp_) + first_lag - 1)
         r_.predicted_fault = cyc_;
     // slots_cut: the first sweep ends after LP + 4 cycles where its slots need NS + 2 (a
     // slot-bound scene), so the RTL shows the next colour in the model's cycle LP + 4
-    if (o_.expect == "slots_cut" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == model_.lp + 4)
+    if (o_.expect == "slots_cut" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == model_.lp + 4 + first_lag)
         r_.predicted_fault = cyc_;
     // bypass: every write of the pipelined pass lands a cycle early, so the RTL's write-back
     // lane shows the first one in the cycle in which the model writes it
@@ -336,9 +338,11 @@ bool Run::cycle(const cyc_inputs &in) {
     // positions in the first sweep where its odd ones are due; its position 0 (node K-1,
     // free and moving in the scene this runs on) is written at slot 0's write cycle
     // (LP + 3), where the model writes nothing, and shows on its lane the cycle after
-    // (a sweep's writes land up to SP cycles into the next sweep: its time there is st_t + SP)
+    // (a sweep's writes land up to SP cycles into the next sweep: its time there is st_t + SP;
+    // FUSE: the first sweep is the fused one, its slots and its length lag cycles later)
+    const int fuse_lag = hp_.fuse ? model_.st_lag : 0;
     if (o_.expect == "hazard" && r_.predicted_fault < 0 && model_.st_running && model_.st_iter == 0 &&
-        model_.st_t + (model_.st_colour ? model_.st_period : 0) == 4 + model_.lp)
+        model_.st_t + (model_.st_colour ? model_.st_period + fuse_lag : 0) == 4 + model_.lp + fuse_lag)
         r_.predicted_fault = cyc_;
     // graph_hazard: graph_stream goes on to the next colour where it should drain, so the RTL
     // shows the next edge's a one cycle into the model's drain
@@ -362,7 +366,10 @@ bool Run::cycle(const cyc_inputs &in) {
         r_.mismatch_cycle = cyc_;
         return false;
     }
-    last_edge_verlet_ = model_.pass_d && !in.reset;  // a pass writes its stage-D node at this edge
+    // a pass writes its stage-D node at this edge, or (FUSE) the fused sweep's Verlet step its pair j
+    const int fused_pair = model_.st_t - 2 - model_.st_lag;
+    last_edge_verlet_ = (model_.pass_d || (model_.st_running && model_.st_fused && fused_pair >= 0 &&
+                                           fused_pair < (hp_.k + 1) / 2)) && !in.reset;
     if (rtl_on_) {
         top_->clk = 1;
         top_->eval();
