@@ -510,7 +510,7 @@ module chain_stream #(
                     .out_valid(o_valid), .out_t(o_t), .out_ok(o_ok), .out_tag(o_tag), .out_p(o_p), .out_c(o_c));
                 assign o_j   = o_tag[TAG_W-1 -: XW];
                 assign o_odd = o_tag[3];
-                wire unused_held = &{1'b0, a[NB-1], b[NB-1]};  // no fused sweep: nothing held is written
+                wire unused_held = &{1'b0, a[NB-1], b[NB-1], fused_s};  // no fused sweep: nothing held is written
                 wire o_pin_a = o_tag[1];
                 wire o_pin_b = o_tag[0];
                 wire ok = o_valid && o_ok && o_tag[2];

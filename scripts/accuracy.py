@@ -1191,8 +1191,9 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     A("Macklin et al. 2019 (\"Small Steps in Physics Simulation\") found that n substeps of one iteration give less "
       "constraint error than one step of n iterations at similar cost. In Strand's hardware terms the two cost nearly "
       "the same cycles per frame (the formula charges each substep its Verlet pass, K + 5 cycles with constraints in the "
-      "serial build, so n substeps cost (n - 1)(K + 5) more; in the pipelined chain, which steps two nodes a clock, "
-      "ceil(K/2) + 6 a substep and the pipe's drain n times instead of once); the table compares the largest stretch of the two at each n. `swing_rope` (a rope "
+      "serial build, so n substeps cost (n - 1)(K + 5) more; in the pipelined chain, 5 cycles a substep with the centred "
+      "rule, whose first sweep takes the Verlet step, or ceil(K/2) + 6 with the pairwise rule, which steps two nodes a "
+      "clock in a Verlet pass, and the pipe's drain n times instead of once); the table compares the largest stretch of the two at each n. `swing_rope` (a rope "
       "released horizontal, 2 s) is the dynamic case; `catenary` the static one, at the maximum over the run and at rest.")
     A("")
     A("| scene | measure | format | rule | n | cycles n x 1 / 1 x n | stretch n substeps x 1 | stretch 1 x n iterations | verdict |")
