@@ -62,6 +62,14 @@
  * Global node g = u K + x has colour g mod 2; the chain's end nodes have one neighbour
  * (the operation runs and its result is dropped), so every sweep takes the same time.
  *
+ * FUSE (the centred rule): the pass's first sweep also takes the Verlet step. Its pair
+ * reads go to the units' step (pair_fuse), whose stage W gives the nodes as the step
+ * leaves them STRAND_FUSE_LAG (4) cycles later, in place of the memories' words: so its
+ * slots come 4 cycles later (ts = t - 4) and it lasts SF = SP + 4. The step writes the
+ * colour-1 node and both previous positions as the pair leaves stage W; this sweep writes
+ * every colour-0 node but a pinned one: its result, or where the step left it (held, or
+ * no target), carried in the up pipe's tag. Same results as a Verlet pass, then the sweeps.
+ *
  * Observation (DEBUG): uidx is the sweep's colour, nidx the pair read (j, while the
  * units read), counter the slots issued in this sweep (0 .. NS; it keeps the last sweep's
  * count until the next sweep issues its first slot, at t = 2), FEC = every slot issued.

@@ -19,6 +19,10 @@
  *     grab (EN_MOUSE and GRAB; the core says which node is held): the held node is put
  *         on the pointer, px = its old x; it counts as pinned for the constraints
  *         and the ground
+ * FUSE (a pipelined chain, the centred rule): there is no Verlet pass; the same stages step
+ * the pairs chain_stream's first sweep reads (pair_fuse, in the sweep's order) and stage W
+ * hands them to the sweep (pass_*), writing the previous positions, the forces' clears and
+ * the position of the colour-1 node (write port 2); the sweep writes the colour-0 node.
  * A ground pass (EN_GROUND, ground_start) walks the nodes the same way with
  * ground_node(): a node past the boundary on the normal axis is put on it, its
  * velocity along the normal reversed, friction on the other axes. Pinned nodes are
