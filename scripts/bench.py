@@ -499,7 +499,9 @@ def main():
              "every unit reading a pair of neighbours a clock from its two memory banks and taking one constraint a "
              "clock: a node of the centred rule through two distance pipes, a link of the pairwise rule through one, "
              "so its ceiling is M updates a clock; a sweep takes max(K/2 + 3, LP + 4) cycles, so a short body waits "
-             "for the pipe's latency LP at every colour switch, and a long one pays its drain once a substep). Cycles "
+             "for the pipe's latency LP at every colour switch, and a long one pays its drain once a substep; with the "
+             "centred rule the first sweep of a substep also takes the Verlet step, 4 cycles later, where the pairwise "
+             "rule has a Verlet pass of ceil(K/2) + 6 cycles: docs/architecture.md, section 3b). Cycles "
              "are counted by the harness on the RTL (Verilator, RTL alone); updates/s = updates per clock over whole "
              "frames x fmax.", "",
              *phys, "",
