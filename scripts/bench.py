@@ -566,7 +566,7 @@ def goals_table():
             b, v, v1 = GOALS[key]
             rows.append(f"| >= {GOAL_PER_UNIT} x M updates per clock on a long body (N >= 256), {what} | {b} "
                         f"pipelined ({units_nodes(b)[1]} nodes a unit; the long-body table has every build): "
-                        f"{v:.3f} M at {GOAL_ITERS} iterations, {v1:.3f} M at 1 (one constraint a clock a "
+                        f"{v:.4f} M at {GOAL_ITERS} iterations, {v1:.4f} M at 1 (one constraint a clock a "
                         f"unit, less the pipe's drain each substep{FUSED_NOTE if what == 'centred rule' else ''}) | "
                         f"{met(v >= GOAL_PER_UNIT)} at {GOAL_ITERS}, "
                         f"{met(v1 >= GOAL_PER_UNIT)} at 1 |")
