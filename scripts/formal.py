@@ -293,27 +293,21 @@ def update_doc(doc, rows, frows, all_tasks, fault_names):
         name = cells[0][2:] if line.startswith("| ") else None
         if name in ran and len(cells) == 7:
             stem, task, path, mode, depth, params, status, dt, where = ran.pop(name)
-            what = cells[1] if cells[1] == "(as above)" else cell(proves(path))
-            lines[i] = "| %s | %s | %s | %s | %s | %s | %.0f s |" % (name, what, mode, depth, params or "-", status, dt)
+            lines[i] = "| %s | %s | %s | %s | %s | %s | %.0f s |" % (name, cells[1], mode, depth, params or "-", status, dt)
         elif len(cells) == 5 and name is not None and name not in ("fault", "---"):
             last_fault = i
             if name in faults:
                 lines[i] = fault_row(*faults.pop(name))
-    # a task the table lacks (a new .sby file or task): its row goes in name order, the
-    # checker's text on the first row of its file
+    # a task the table lacks (a new .sby file or task): its row goes in name order (its text below)
     task_rows = [i for i, l in enumerate(lines) if l.startswith("| ") and len(l.split(" | ")) == 7
                  and l.split(" | ")[0][2:] not in ("task", "---")]
     if ran and not task_rows:
         sys.exit("formal: --doc with --only: no table of tasks in %s (make formal writes the table first)" % doc)
-    seen_files = set()
     for name in sorted(ran):
         stem, task, path, mode, depth, params, status, dt, where = ran[name]
         names = [lines[i].split(" | ")[0][2:] for i in task_rows]
         at = next((task_rows[j] for j, n in enumerate(names) if n > name), task_rows[-1] + 1)
-        first = stem not in seen_files and not any(n.startswith(stem + "_") for n in names)
-        seen_files.add(stem)
-        lines.insert(at, "| %s | %s | %s | %s | %s | %s | %.0f s |" % (
-            name, cell(proves(path)) if first else "(as above)", mode, depth, params or "-", status, dt))
+        lines.insert(at, "| %s | (as above) | %s | %s | %s | %s | %.0f s |" % (name, mode, depth, params or "-", status, dt))
         task_rows = [i if i < at else i + 1 for i in task_rows] + [at]
         task_rows.sort()
     if faults:
