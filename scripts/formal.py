@@ -264,7 +264,8 @@ def main():
     total = time.time() - t_start
     print("formal: %d tasks, %d planted faults, %d failed, %.0f s" % (len(rows), len(frows), failed, total))
     if a.doc and (a.only or a.no_tasks):  # a partial run: its rows replace theirs in the last full table
-        update_doc(a.doc, rows, frows)
+        # (and the rows of tasks and faults that no longer exist go)
+        update_doc(a.doc, rows, frows, list_tasks(env), {f[0] for f in read_faults()})
     elif a.doc:
         write_doc(a.doc, rows, frows, total)
     return 1 if failed else 0
@@ -274,7 +275,7 @@ def cell(text):
     return str(text).replace("|", "\\|")
 
 
-def update_doc(doc, rows, frows):
+def update_doc(doc, rows, frows, all_tasks, fault_names):
     """--only or --no-tasks with --doc: the rows of the tasks that ran are replaced in the table the last
     full run wrote (the first row of each file with its checker's 'proves' text as it is now),
     so are the planted faults that ran (--faults PATTERN; a fault the table lacks is added),
@@ -319,13 +320,33 @@ def update_doc(doc, rows, frows):
         if last_fault is None:
             sys.exit("formal: --doc with --only: no table of planted faults in %s (make formal writes it)" % doc)
         lines[last_fault + 1:last_fault + 1] = [fault_row(*f) for f in faults.values()]
+    # a task or fault renamed or removed since the table was written: its row goes
+    task_names = {s + "_" + t: p for s, t, p in all_tasks}
+    def gone(line):
+        cells = line.split(" | ")
+        name = cells[0][2:] if line.startswith("| ") else None
+        if name is None or name in ("task", "fault", "---"):
+            return False
+        return (len(cells) == 7 and name not in task_names) or (len(cells) == 5 and name not in fault_names)
+    lines = [l for l in lines if not gone(l)]
+    # the checker's text on the first row of each .sby file's tasks, "(as above)" on the rest
+    prev_path = None
+    for i, line in enumerate(lines):
+        cells = line.split(" | ")
+        if line.startswith("| ") and len(cells) == 7 and cells[0][2:] in task_names:
+            path = task_names[cells[0][2:]]
+            cells[1] = "(as above)" if path == prev_path else cell(proves(path))
+            lines[i] = " | ".join(cells)
+            prev_path = path
     now = (["%s_%s (%s, %.0f s)" % (r[0], r[1], r[6], r[7]) for r in rows]
            + ["fault %s (%s, %.0f s)" % (f[0], "caught" if f[3] == "FAIL" else "NOT caught", f[4]) for f in frows])
     head = "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced or added: "
     heads = (head, "Run again alone afterwards (`make formal ONLY=...`), their rows above replaced: ")
     earlier = [item for l in lines for h in heads if l.startswith(h)  # the earlier partial runs' entries not run now
                for item in re.findall(r"(?:fault )?\w+ \([^)]*\)", l[len(h):])
-               if item.split(" (")[0] not in {n.split(" (")[0] for n in now}]
+               if item.split(" (")[0] not in {n.split(" (")[0] for n in now}
+               and (item[len("fault "):].split(" (")[0] in fault_names if item.startswith("fault ")
+                    else item.split(" (")[0] in task_names)]
     lines = [l for l in lines if not l.startswith(heads)] + ["", head + ", ".join(earlier + now) + "."]
     doc_region.rewrite(doc, "formal", "\n".join(l for i, l in enumerate(lines) if l or (i and lines[i - 1])) + "\n")
 
