@@ -771,7 +771,7 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
        previous sweep's (SP cycles along) while this one starts. */
     if (chain_streams(hp) && c->st_running) {
         const int lag = c->st_fused ? c->st_lag : 0;
-        if (c->st_t == 0) stream_plan(c);
+        if (c->st_t == 1) stream_plan(c); /* a sweep's first cycle (t = 1), its first read */
         if (c->st_fused) fuse_step_write(c, written, c->st_t - 2 - lag); /* pair j leaves stage W with slot j */
         stream_write(c, written, c->st_colour, c->st_t - 3 - c->lp - lag);
         stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 3 - c->lp);
@@ -813,9 +813,9 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
         /* FUSE: the fused sweep's slots (ts = t - lag), and its end, lag cycles later */
         const int lag = c->st_fused ? c->st_lag : 0, ts = c->st_t - lag;
-        const int sweep = last ? c->st_last : c->st_period + lag;
+        const int sweep = last ? c->st_last : c->st_period + lag; /* its cycles, t = 1 .. sweep */
         const bool slot = c->st_running && ts >= 2 && ts <= k / 2 + 2; /* slots 0 .. K/2 */
-        const bool sweep_end = c->st_running && c->st_t == sweep - 1;
+        const bool sweep_end = c->st_running && c->st_t == sweep;
         /* the count restarts at the sweep's first slot: it reaches K/2 + 1 (FEC) even when the
            last slot issues in the sweep's last cycle, and keeps it until the next sweep's first */
         const int counter_next = !slot ? c->st_counter : ts == 2 ? 1 : c->st_counter + 1;
@@ -823,9 +823,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         if (seq_start && !c->st_running) {
             c->st_running = true;
             c->st_fused = hp->fuse;
-            c->st_t = c->st_colour = c->st_iter = c->st_counter = 0;
+            c->st_colour = c->st_iter = c->st_counter = 0;
+            c->st_t = 1;
         } else if (sweep_end) {
-            c->st_t = 0;
+            c->st_t = last ? 0 : 1;
             c->st_fused = false;
             c->st_counter = counter_next;
             if (last) c->st_running = false;

@@ -69,26 +69,27 @@ static long stream_slots(const hw_params *hp) { return hp->k / 2 + 1; }
 
 long hw_stream_period(const hw_params *hp)
 {
-    /* chain_stream.v: every unit reads the pairs of stream positions (2j, 2j+1) at t = j + 1
-       (even units upward, odd ones downward), slots j = 0 .. NS-1 at t = j + 2; slot j's writes
-       land in cycle j + LP + 3. The next sweep starts when its reads follow those writes (its
-       read of pair j, at t = j + 1, after slot j + 1's write: LP + 4) and this sweep's last
-       slot has issued (slot NS-1 at t = NS + 1: NS + 2). */
-    long slots2 = stream_slots(hp) + 2, lp4 = hw_toward_pipe_latency(hp) + 4;
-    return slots2 > lp4 ? slots2 : lp4;
+    /* chain_stream.v: a sweep's cycles are t = 1 .. SP; every unit reads the pairs of stream
+       positions (2j, 2j+1) at t = j + 1 (even units upward, odd ones downward), slots
+       j = 0 .. NS-1 at t = j + 2; slot j's writes land in cycle j + LP + 3. The next sweep's
+       t = 1 follows this one's t = SP when its reads follow those writes (its read of pair j,
+       at this sweep's SP + j + 1, after slot j + 1's write: SP >= LP + 4) and this sweep's
+       last slot has issued (slot NS-1 at t = NS + 1: SP >= NS + 1). */
+    long slots1 = stream_slots(hp) + 1, lp4 = hw_toward_pipe_latency(hp) + 4;
+    return slots1 > lp4 ? slots1 : lp4;
 }
 
 bool hw_stream_slot_bound(const hw_params *hp)
 {
-    /* a pipelined chain's sweeps wait for their slots, not for the pipe: NS + 2 > LP + 4 */
+    /* a pipelined chain's sweeps wait for their slots, not for the pipe: NS + 1 > LP + 4 */
     return hp->arch && !hp->graph && hp->en_constraints &&
-           stream_slots(hp) + 2 > hw_toward_pipe_latency(hp) + 4;
+           stream_slots(hp) + 1 > hw_toward_pipe_latency(hp) + 4;
 }
 
 long hw_stream_last(const hw_params *hp)
 {
-    /* the pass's last sweep runs until its last write (slot NS-1's, cycle NS + LP + 2) has landed */
-    return stream_slots(hp) + hw_toward_pipe_latency(hp) + 3;
+    /* the pass's last sweep runs until its last write (slot NS-1's, cycle NS + LP + 2) lands */
+    return stream_slots(hp) + hw_toward_pipe_latency(hp) + 2;
 }
 
 /* the pipelined passes: a chain's (chain_stream, spring_stream) and a graph's rods (graph_stream) */
@@ -158,7 +159,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
         snprintf(steps, sizeof steps, "; LSQ = ceil((SQRT_BITS + 1) / PIPE_STEPS) + 1 = %ld, LDV = ceil((DIV_BITS + 1) / PIPE_STEPS) + 1 = %ld",
                  hw_sqrt_pipe_latency(hp), hw_div_pipe_latency(hp));
     if (chain_streams(hp) && hp->en_constraints) /* the pass's last sweep runs to its drain */
-        snprintf(last, sizeof last, "; a substep's last sweep SL = K/2 + LP + 4 = %ld", hw_stream_last(hp));
+        snprintf(last, sizeof last, "; a substep's last sweep SL = floor(K/2) + LP + 3 = %ld", hw_stream_last(hp));
     if (hp->fuse)
         snprintf(verlet, sizeof verlet, "1 + ");
     else
@@ -179,7 +180,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     graph_streams(hp) ? "2 E_RODS + COLOURS (LP + 3) (pipelined graph)"
-                    : hp->arch        ? "2 sweeps of SP = max(K/2 + 3, LP + 4) (pipelined)"
+                    : hp->arch        ? "2 sweeps of SP = max(floor(K/2) + 2, LP + 4) (pipelined)"
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
                     chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)" : "1 + links (LS + 5)",

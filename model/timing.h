@@ -27,15 +27,15 @@ long hw_spring_latency(const hw_params *hp);
 long hw_spring_pipe_latency(const hw_params *hp);
 long hw_spring_sweep(const hw_params *hp);
 /* chain_stream.v (ARCH = 1): a sweep (one colour of a pass), its start to the next sweep's
-   (SP = max(K/2 + 3, LP + 4): the drain of one overlaps the next), and the last sweep of the
-   constraint passes of a substep, to its drain (SL = K/2 + LP + 4). */
+   (SP = max(floor(K/2) + 2, LP + 4): the drain of one overlaps the next), and the last sweep of the
+   constraint passes of a substep, to its drain (SL = floor(K/2) + LP + 3). */
 long hw_stream_period(const hw_params *hp);
 /* node_unit: the steps of a Verlet or ground pass: K nodes, or with PAIR (a chain's pipelined
    build) ceil(K / 2) rows of two, one node of each bank a clock */
 long hw_pass_steps(const hw_params *hp);
 long hw_stream_last(const hw_params *hp);
 long hw_fuse_lag(void);
-bool hw_stream_slot_bound(const hw_params *hp); /* sweep period set by the slots (NS + 2), not the pipe */
+bool hw_stream_slot_bound(const hw_params *hp); /* sweep period set by the slots (NS + 1), not the pipe */
 /* One constraint pass (chain_sequencer, pair_sequencer or chain_stream), start to done, without the start cycle. */
 long hw_constraint_pass(const hw_params *hp);
 /* One spring pass, from its start cycle to its done. */

@@ -24,7 +24,7 @@
  * positions (2j, 2j+1) a clock, one from each bank, and writes up to two a clock, one
  * to each.
  *
- * A sweep, counting its first cycle as t = 0 (every unit in step; PJ = ceil(K/2) pairs,
+ * A sweep, counting its first cycle as t = 1 (every unit in step; PJ = ceil(K/2) pairs,
  * NS = floor(K/2) + 1 slots; LT is the distance pipe's latency, model/timing.c
  * hw_toward_pipe_latency):
  *   t = 1 .. PJ   the units read pair j = t-1 (pair_re, the rows of pair_row_*_all);
@@ -52,13 +52,14 @@
  *                the cycle after the result, each if it is this unit's node. A link
  *                across a unit border is computed by both units alike, and each writes
  *                its own end.
- *   Slot j's writes land in cycle j + LT + 3. The next sweep's read of pair j (cycle
- *   SP + j + 1) follows the last write to either of its positions (slot j + 1's, in
- *   cycle j + LT + 4) when SP >= LT + 4, and this sweep's last slot (NS-1, at t = NS + 1)
- *   has issued when SP >= NS + 2: the next sweep starts at t = SP = max(NS + 2, LT + 4),
- *   so sweeps overlap by their drain; the last sweep of the pass runs to t = SL - 1,
- *   SL = NS + LT + 3 (its last write lands in cycle NS + LT + 2), and done is high the
- *   cycle after (2 ITER sweeps a pass: (2 ITER - 1) SP + SL cycles).
+ *   Slot j's writes land in cycle j + LT + 3. A sweep lasts t = 1 .. SP, the next one's
+ *   t = 1 following its t = SP: that one's read of pair j (this one's cycle SP + j + 1)
+ *   follows the last write to either of its positions (slot j + 1's, in cycle j + LT + 4)
+ *   when SP >= LT + 4, and this sweep's last slot (NS-1, at t = NS + 1) has issued by its
+ *   last cycle when SP >= NS + 1: SP = max(NS + 1, LT + 4), so sweeps overlap by their
+ *   drain; the last sweep of the pass runs to t = SL = NS + LT + 2 (its last write lands
+ *   then), and done is high the cycle after (2 ITER sweeps a pass: (2 ITER - 1) SP + SL
+ *   cycles). No cycle goes by without a read: a sweep reads pair 0 in its first cycle.
  * Global node g = u K + x has colour g mod 2; the chain's end nodes have one neighbour
  * (the operation runs and its result is dropped), so every sweep takes the same time.
  *
@@ -124,8 +125,8 @@ module chain_stream #(
     localparam integer PJ     = (K + 1) / 2;                   // pairs read a sweep
     localparam integer NS     = K / 2 + 1;                     // slots a sweep
     localparam [0:0]   K_EVEN = K % 2 == 0;
-    localparam integer SP     = NS + 2 > LT + 4 ? NS + 2 : LT + 4;  // a sweep's cycles before the next
-    localparam integer SL     = NS + LT + 3;                   // the last sweep's, to its last write
+    localparam integer SP     = NS + 1 > LT + 4 ? NS + 1 : LT + 4;  // a sweep's cycles (t = 1 .. SP) before the next
+    localparam integer SL     = NS + LT + 2;                   // the last sweep's, to its last write
     // FUSE: the first sweep of a pass takes its words from the units' Verlet step, FUSE_LAG
     // cycles after their read (node_unit's stages R, A, B, C): its slots, and its length, are
     // that much later
@@ -139,12 +140,12 @@ module chain_stream #(
     // FUSE, the centred rule's up pipe: also whether the slot is the first sweep's, and the
     // node's own position (written when the sweep leaves it where the Verlet step put it)
     localparam integer TAG_U  = FUSE != 0 ? TAG_W + 1 + DW : TAG_W;
-    localparam integer SP_LAST_I = SP - 1, SL_LAST_I = SL - 1, SF_LAST_I = SF - 1, LAG_I = (1 << TW) - LAG, PJ_I = PJ, PJ1_I = PJ + 1, NS1_I = NS + 1;
+    localparam integer SP_LAST_I = SP, SL_LAST_I = SL, SF_LAST_I = SF, LAG_I = (1 << TW) + 1 - LAG, PJ_I = PJ, PJ1_I = PJ + 1, NS1_I = NS + 1;
     localparam integer ITER_LAST_I = ITER - 1, K_LAST_I = K - 1, K_HALF_I = K / 2, LAST_ODD_I = (K - 1) / 2;
     localparam [TW-1:0]  SP_LAST = SP_LAST_I[TW-1:0];
     localparam [TW-1:0]  SL_LAST = SL_LAST_I[TW-1:0];
     localparam [TW-1:0]  SF_LAST = SF_LAST_I[TW-1:0];
-    localparam [TW-1:0]  TS_FIRST = LAG_I[TW-1:0];           // the slot counter at a fused sweep's start: -LAG
+    localparam [TW-1:0]  TS_FIRST = LAG_I[TW-1:0];           // the slot counter in a fused sweep's first cycle: 1 - LAG
     localparam [TW-1:0]  T_PJ    = PJ_I[TW-1:0];
     localparam [TW-1:0]  T_PJ1   = PJ1_I[TW-1:0];
     localparam [TW-1:0]  T_NS1   = NS1_I[TW-1:0];
@@ -164,18 +165,22 @@ module chain_stream #(
     reg           colour;
     reg [ITW-1:0] iter_q;
     reg           fused;     // FUSE: the sweep under way is the pass's first, its words the Verlet step's
-    reg [TW-1:0]  ts;        // the slot counter: t, or in a fused sweep t - LAG (from -LAG, mod 2^TW)
+    reg [TW-1:0]  ts;        // the slot counter: t, or in a fused sweep t - LAG (from 1 - LAG, mod 2^TW)
     wire          last      = colour && iter_q == ITER_LAST;  // the pass's last sweep
+    // (t counts a sweep's cycles from 1: its first cycle reads pair 0, so no cycle of the pass
+    // goes by without a read or a slot but those the hazards and the pipe's drain ask for)
     wire          sweep_end = running && t == (last ? SL_LAST : fused ? SF_LAST : SP_LAST);
     // The sweep counter's next value (running, t: the registers below take it). The slot's
     // flags (issued; first, last) are formed from it a cycle ahead and registered, since they
     // select every unit's pipe inputs: a compare on t would sit before that wide fan-out.
     wire          start_now    = start && !running;
-    wire          running_next = reset ? 1'b0 : start_now ? 1'b1 : sweep_end && last ? 1'b0 : running;
-    wire [TW-1:0] t_next       = reset || start_now || sweep_end ? {TW{1'b0}} : running ? t + 1'b1 : t;
+    wire          pass_end     = sweep_end && last;
+    wire          running_next = reset ? 1'b0 : start_now ? 1'b1 : pass_end ? 1'b0 : running;
+    localparam [TW-1:0] T_ONE  = 1;
+    wire [TW-1:0] t_next       = reset || pass_end ? {TW{1'b0}} : start_now || sweep_end ? T_ONE : running ? t + 1'b1 : t;
     wire          fused_next   = !reset && (start_now ? FUSE != 0 : !sweep_end && fused);
-    wire [TW-1:0] ts_start     = FUSE != 0 ? TS_FIRST : {TW{1'b0}};
-    wire [TW-1:0] ts_next      = reset || sweep_end ? {TW{1'b0}} : start_now ? ts_start : running ? ts + 1'b1 : ts;
+    wire [TW-1:0] ts_next      = reset || pass_end ? {TW{1'b0}} : start_now ? TS_FIRST : sweep_end ? T_ONE
+                               : running ? ts + 1'b1 : ts;
     reg           slot;          // slot j = t - 2 is issued (running, 2 <= t <= NS + 1)
     // pair t - 1 is read (running, 1 <= t <= T_PJ), the pair row jr = t - 1: both registered,
     // formed a cycle ahead from t (below), so that the memories' addresses and the pinned
@@ -206,16 +211,17 @@ module chain_stream #(
     endfunction
     // next cycle's flags, from t_next's three cases rather than from t_next itself: so the
     // compares run on t beside the choice of t_next, not after it
-    wire [3:0] flags_next = reset || sweep_end ? slot_flags({TW{1'b0}}) : start_now ? slot_flags(ts_start)
-                          : running ? slot_flags(ts + 1'b1) : slot_flags(ts);
+    wire [3:0] flags_next = reset || pass_end ? slot_flags({TW{1'b0}}) : start_now ? slot_flags(TS_FIRST)
+                          : sweep_end ? slot_flags(T_ONE) : running ? slot_flags(ts + 1'b1) : slot_flags(ts);
     // the slots issued: the count restarts at the sweep's first slot, so that it reaches NS
-    // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 2), and FEC
+    // (FEC) even when the last slot issues in the sweep's last cycle (SP = NS + 1), and FEC
     // stays high until the next sweep's first slot
     wire [CW-1:0] counter_next = !slot ? counter : ts == T_TWO ? {{(CW-1){1'b0}}, 1'b1} : counter + 1'b1;
 
-    // next cycle's t is t + 1 while a sweep runs on (else 0: a sweep's end, a start, idle), so
-    // next cycle reads pair t when t + 1 <= T_PJ
-    wire reading_next = running && !sweep_end && t < T_PJ;
+    // next cycle's t is t + 1 while a sweep runs on, so next cycle reads pair t when t + 1 <= T_PJ;
+    // after a start or a sweep's end (but the pass's last) next cycle is a sweep's t = 1: pair 0
+    wire first_read   = start_now || (sweep_end && !last);
+    wire reading_next = first_read || (running && !sweep_end && t < T_PJ);
     /* verilator lint_off UNUSEDSIGNAL */
     // the row is t's low bits: zero-extended first, since the sweep counter can be narrower
     // than a row (a slot-bound unit at a short pipe)
@@ -223,13 +229,13 @@ module chain_stream #(
     /* verilator lint_on UNUSEDSIGNAL */
     // next cycle's reading and jr (the units' row registers take them too, below)
     wire          read_d = !reset && reading_next;
-    wire [IW-1:0] jr_d   = read_d ? t_wide[IW-1:0] : {IW{1'b0}};
+    wire [IW-1:0] jr_d   = read_d && !first_read ? t_wide[IW-1:0] : {IW{1'b0}};
     localparam integer PJ_LAST_I = PJ - 1;
     localparam [IW-1:0] PJ_LAST = PJ_LAST_I[IW-1:0];
     always @(posedge clk) begin
         reading    <= read_d;
         jr         <= jr_d;
-        pair_fuse  <= read_d && fused;
+        pair_fuse  <= read_d && fused_next;
         pair_has_o <= K_EVEN || jr_d != PJ_LAST;
     end
 
@@ -244,7 +250,7 @@ module chain_stream #(
             done    <= 1'b0;
             counter <= {CW{1'b0}};
         end else begin
-            done <= sweep_end && last;
+            done <= pass_end;
             if (start_now) begin
                 colour  <= 1'b0;
                 iter_q  <= {ITW{1'b0}};

@@ -511,6 +511,27 @@ module node_unit #(
     // fused sweep's words (FUSE)
     wire [DIM*(1+PAIR)*W-1:0] step_pos, step_prev;
 
+    // The in-touch box (EN_MOUSE, not GRAB): the unit's own registered copy (keep: Yosys would
+    // merge the units' equal flip-flops), so that frame_ctrl's box reaches every unit's
+    // compares through a register beside them, not across the device in the compare's cycle
+    // (that route set the clock of the largest build). The box is formed once a frame from
+    // the pointer sampled at its start; its first test comes cycles later.
+    wire [DIM*(W+1)-1:0] touch_lo_u, touch_hi_u;
+    generate
+        if (EN_MOUSE && !GRAB) begin : g_touch_copy
+            (* keep *) reg [DIM*(W+1)-1:0] lo_q, hi_q;
+            always @(posedge clk) begin
+                lo_q <= touch_lo;
+                hi_q <= touch_hi;
+            end
+            assign touch_lo_u = lo_q;
+            assign touch_hi_u = hi_q;
+        end else begin : g_no_touch_copy
+            assign touch_lo_u = touch_lo;
+            assign touch_hi_u = touch_hi;
+        end
+    endgenerate
+
     genvar k;
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_lane
@@ -530,7 +551,7 @@ module node_unit #(
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
                 .gdt2(gdt2[k*W +: W]), .damping(damping), .impulse(impulse),
-                .touch_lo(touch_lo[k*(W+1) +: W+1]), .touch_hi(touch_hi[k*(W+1) +: W+1]),
+                .touch_lo(touch_lo_u[k*(W+1) +: W+1]), .touch_hi(touch_hi_u[k*(W+1) +: W+1]),
                 .mouse(mouse[k*W +: W]), .in_touch(in_touch), .ground(ground), .friction(friction),
                 .q(a_pos[k*W +: W]), .qp(a_prev[k*W +: W]), .qa(a_acc[k*W +: W]), .b_data(b_pos_raw[k*W +: W]),
                 .q_e(pair_pos_e[k*W +: W]), .q_o(pair_pos_o[k*W +: W]),

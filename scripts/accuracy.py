@@ -550,7 +550,7 @@ def projection_section(A, results):
     A("`projection = previous` costs cycles: `toward_prev` takes 2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20 cycles a "
       "correction where `toward` takes SQRT_BITS + DIV_BITS + 2 DIM + 10 (docs/architecture.md), about twice; in the "
       "pipelined pass only the pipe's latency LP grows (2 LSQ + LDV + 28 against LSQ + LDV + 11, LSQ and LDV the "
-      "root's and the divider's latencies), which a sweep of max(K/2 + 3, LP + 4) cycles waits for when the body is short. Each "
+      "root's and the divider's latencies), which a sweep of max(floor(K/2) + 2, LP + 4) cycles waits for when the body is short. Each "
       "body below runs both ways over a grid of substeps and iterations (Q16.16; cycles per frame from the RTL "
       "formula, the serial build). Energy change is over the run, as % of the larger of the starting energy and the "
       "largest kinetic energy (the quantity `strand run` prints); stretch is the largest link stretch over the run.")

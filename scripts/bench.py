@@ -243,7 +243,7 @@ def long_bodies(rows):
     out = ["", f"**Long bodies.** The pipelined builds of at least 256 nodes, their updates per clock in the constraint "
                f"passes per unit (of the one a clock a unit can take) at the scenes' one iteration and at {GOAL_ITERS}: a "
                "substep pays the pipe's drain once, whatever the iterations, and a sweep of a unit of K nodes waits for "
-               "the pipe's latency unless K/2 + 3 >= LP + 4 (docs/architecture.md, section 3b). Measured on the RTL.", "",
+               "the pipe's latency unless floor(K/2) + 2 >= LP + 4 (docs/architecture.md, section 3b). Measured on the RTL.", "",
            f"| build | rule | nodes per unit | 1 iteration | {GOAL_ITERS} iterations |", "|---|---|--:|--:|--:|"]
     for r in long_pipe:
         scene = f"tb/bench/bench_{r['build']}.scene" if r["rule"] == "centred" else \
@@ -502,7 +502,7 @@ def main():
              "distance datapath for the whole body, the scene's order); *pipelined* is ARCH = 1 (the red/black order, "
              "every unit reading a pair of neighbours a clock from its two memory banks and taking one constraint a "
              "clock: a node of the centred rule through two distance pipes, a link of the pairwise rule through one, "
-             "so its ceiling is M updates a clock; a sweep takes max(K/2 + 3, LP + 4) cycles, so a short body waits "
+             "so its ceiling is M updates a clock; a sweep takes max(floor(K/2) + 2, LP + 4) cycles, so a short body waits "
              "for the pipe's latency LP at every colour switch, and a long one pays its drain once a substep; with the "
              "centred rule the first sweep of a substep also takes the Verlet step, 4 cycles later, where the pairwise "
              "rule has a Verlet pass of ceil(K/2) + 6 cycles: docs/architecture.md, section 3b). Cycles "

@@ -128,7 +128,7 @@ PLAN = [
     {"name": "chain 2D one unit, springs without constraints, no mouse, ground +x", "GRAPH": 0, "DIM": 2,
      "EN_CONSTRAINTS": 0, "EN_SPRINGS": 1, "M": 1, "EN_MOUSE": 0, "EN_GRAVITY": 0, "EN_GROUND": 1, "GROUND_AXIS": 0,
      "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow"},
-    # K/2 + 3 > LP + 4 (LP = SQRT_BITS + DIV_BITS + 15 <= 35 at W = 12, narrow): the sweeps wait for their slots
+    # floor(K/2) + 2 > LP + 4 (LP = SQRT_BITS + DIV_BITS + 15 <= 35 at W = 12, narrow): the sweeps wait for their slots
     {"name": "chain pipelined slot-bound K=80", "GRAPH": 0, "DIM": 2, "EN_CONSTRAINTS": 1, "ORDER": 1, "M": 2, "K": 80,
      "W": 12, "SQRT": "narrow", "DIV": "narrow", "PROJECTION": 0, "EN_SPRINGS": 0},
 ]
@@ -141,7 +141,7 @@ CLASSES = [
     ("chain pipelined", "a chain's constraints on the pipelined pass (order redblack, ARCH = 1)"),
     ("chain pipelined K=1", "the pipelined pass with one node per unit"),
     ("chain pipelined slot-bound", "the pipelined pass with sweeps set by their slots, not the pipe's latency "
-                                   "(K/2 + 3 > LP + 4)"),
+                                   "(floor(K/2) + 2 > LP + 4)"),
     ("previous serial", "projection = previous on the serial pass or a graph's rods"),
     ("previous pipelined", "projection = previous on a pipelined pass"),
     ("pipe steps>1", "a pipelined pass whose root and dividers take several iterations a stage (PIPE_STEPS > 1)"),

@@ -46,14 +46,14 @@ FAULTS = {
     # the pipelined pass (ARCH = 1): a sweep one cycle short, so the next colour reads before
     # the last write of the previous one has landed (shows first as the colour changing early)
     "boundary": [
-        ("chain_stream.v", r"^    localparam integer SP     = NS \+ 2 > LT \+ 4 \? NS \+ 2 : LT \+ 4; .*\n",
-         "    localparam integer SP     = (NS + 2 > LT + 4 ? NS + 2 : LT + 4) - 1;  // planted fault: a sweep one cycle short\n"),
+        ("chain_stream.v", r"^    localparam integer SP     = NS \+ 1 > LT \+ 4 \? NS \+ 1 : LT \+ 4; .*\n",
+         "    localparam integer SP     = (NS + 1 > LT + 4 ? NS + 1 : LT + 4) - 1;  // planted fault: a sweep one cycle short\n"),
     ],
     # the pipelined pass: a sweep's period from the pipe's latency alone (LT + 4), not its slots
-    # (NS + 2): on a long unit (slot-bound) the next colour starts before the sweep has issued
+    # (NS + 1): on a long unit (slot-bound) the next colour starts before the sweep has issued
     # its last slots
     "slots_cut": [
-        ("chain_stream.v", r"^    localparam integer SP     = NS \+ 2 > LT \+ 4 \? NS \+ 2 : LT \+ 4; .*\n",
+        ("chain_stream.v", r"^    localparam integer SP     = NS \+ 1 > LT \+ 4 \? NS \+ 1 : LT \+ 4; .*\n",
          "    localparam integer SP     = LT + 4;  // planted fault: the period ignores the slots\n"),
     ],
     # the pipelined pass: toward_pipe's output register bypassed (every result a cycle early)

@@ -323,14 +323,14 @@ bool Run::cycle(const cyc_inputs &in) {
         if (m.fec) r_.predicted_fault = cyc_;
     }
     // boundary: the first sweep ends a cycle early, so the RTL shows the next colour in
-    // the cycle the model spends in the sweep's last cycle (FUSE: the fused sweep's, lag longer)
+    // the model's last cycle of the sweep, t = SP (FUSE: the fused sweep's, lag longer)
     const int first_lag = model_.st_fused ? model_.st_lag : 0;
     if (o_.expect == "boundary" && r_.predicted_fault < 0 && model_.st_running &&
-        model_.st_t == hw_stream_period(&hp_) + first_lag - 1)
+        model_.st_t == hw_stream_period(&hp_) + first_lag)
         r_.predicted_fault = cyc_;
-    // slots_cut: the first sweep ends after LP + 4 cycles where its slots need NS + 2 (a
-    // slot-bound scene), so the RTL shows the next colour in the model's cycle LP + 4
-    if (o_.expect == "slots_cut" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == model_.lp + 4 + first_lag)
+    // slots_cut: the first sweep ends after LP + 4 cycles where its slots need NS + 1 (a
+    // slot-bound scene), so the RTL shows the next colour in the model's cycle t = LP + 5
+    if (o_.expect == "slots_cut" && r_.predicted_fault < 0 && model_.st_running && model_.st_t == model_.lp + 5 + first_lag)
         r_.predicted_fault = cyc_;
     // bypass: every write of the pipelined pass lands a cycle early, so the RTL's write-back
     // lane shows the first one in the cycle in which the model writes it

@@ -54,7 +54,7 @@ module stream_props #(
     localparam integer SLOTS = NS;
 `include "pipe_latency.vh"
     localparam integer LT = toward_pipe_latency(1, 1, STEPS);   // the stub's latency (SQRT_BITS = DIV_BITS = 1)
-    localparam integer SP = NS + 2 > LT + 4 ? NS + 2 : LT + 4;  // chain_stream's sweep period
+    localparam integer SP = NS + 1 > LT + 4 ? NS + 1 : LT + 4;  // chain_stream's sweep period
 
     wire             done, fec, pair_re;
     wire [M*IW-1:0]  row_e_all, row_o_all;
@@ -94,7 +94,7 @@ module stream_props #(
     wire         started  = start && !running;
     wire         newsweep = !reset_prev && colour != colour_prev;
     wire         step     = {1'b0, counter} == {1'b0, counter_prev} + 1'b1;
-    wire [15:0]  t_now    = newsweep ? 16'd0 : tsw;  // chain_stream's t
+    wire [15:0]  t_now    = newsweep ? 16'd1 : tsw;  // chain_stream's t
     wire         early    = t_now < LT + 3;             // a write now is the previous sweep's
 
     // this cycle's reads and writes, as node bitmaps, and the checks on them
@@ -151,9 +151,9 @@ module stream_props #(
         else if (fec && step) fec_seen <= 1'b1;
         if (reset || started) sweeps <= 16'd0;
         else if (newsweep || done) sweeps <= sweeps + 16'd1;
-        // t = 0 is the cycle after a start, and the cycle the colour changes
-        if (reset || started) tsw <= 16'd0;
-        else if (newsweep) tsw <= 16'd1;
+        // t = 1 is the cycle after a start, and the cycle the colour changes
+        if (reset || started) tsw <= 16'd1;
+        else if (newsweep) tsw <= 16'd2;
         else tsw <= tsw + 16'd1;
         if (reset || started || newsweep) read_seen <= {N{1'b0}};
         else read_seen <= read_seen | read_now;
