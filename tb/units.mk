@@ -185,6 +185,34 @@ endef
 
 $(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
 
+# fx_mul_pipe's ECP5 branch (STRAND_ECP5_DSP: the multiplier block with its own registers, the
+# branch make synth's ECP5 flows build) against tb/ecp5_mult18x18d.v, the block's model, on the
+# same vectors as the behavioural branch: exhaustive at W = 8, edge and random at W = 17 and 18.
+# name:W:F:BITS
+UNITS_DSP_TESTS := \
+    fx_mul_pipe_w8_f4_ecp5dsp_exhaustive:8:4:7:exhaustive \
+    fx_mul_pipe_w17_f8_ecp5dsp_random:17:8:16:random \
+    fx_mul_pipe_w18_f8_ecp5dsp_random:18:8:17:random
+
+# $(1) name, $(2) W, $(3) F, $(4) BITS, $(5) mode
+define UNITS_DSP_RULE
+$(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
+	@mkdir -p $$(dir $$@)
+	$(UNITS_GEN) mul $(5) $(2) $(3) $(4) $$@ > $$@.n
+
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_mul_pipe.v $(UNITS_ROOT)/rtl/fx_mul_pipe.v $(UNITS_ROOT)/rtl/fx_round.v $(UNITS_ROOT)/tb/ecp5_mult18x18d.v $(UNITS_VH)
+	@mkdir -p $$(dir $$@)
+	$(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul_pipe,$(2),$(3),$(4)) -o $$@ $$(filter %.v,$$^)
+
+.PHONY: units-run-$(1)
+units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+
+units-icarus: units-run-$(1)
+endef
+
+$(foreach t,$(UNITS_DSP_TESTS),$(eval $(call UNITS_DSP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))))))
+
 # ---- the datapaths: toward, spring_force ----
 UNITS_DP_UNITS := fx_add fx_mul fx_round fx_sqrt fx_div
 UNITS_GEN_DP   := $(UNITS_BUILD)/gen_vectors_dp
