@@ -13,7 +13,9 @@
  * the product, each adding one cycle). Only the unit bench of fx_mul_pipe's ECP5 branch
  * (tb/units.mk, STRAND_ECP5_DSP) compiles it.
  */
+/* verilator lint_off DECLFILENAME */  // the module carries the vendor primitive's name
 module MULT18X18D #(
+/* verilator lint_on DECLFILENAME */
     parameter REG_INPUTA_CLK   = "NONE",
     parameter REG_INPUTB_CLK   = "NONE",
     parameter REG_PIPELINE_CLK = "NONE",

@@ -308,11 +308,14 @@ lint-units:
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
+	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl -DSTRAND_ECP5_DSP -GW=18 --top-module fx_mul_pipe rtl/fx_mul_pipe.v tb/ecp5_mult18x18d.v; \
+	out=$$($(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_ROOT)/rtl -Ptb_fx_mul_pipe.W=18 -o /dev/null tb/tb_fx_mul_pipe.v rtl/fx_mul_pipe.v rtl/fx_round.v tb/ecp5_mult18x18d.v 2>&1); \
+	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
 	$(foreach m,toward toward_pipe spring_force spring_force_pipe,for p in $(UNITS_LINT_PARAMS_DP); do \
 	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v); \
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
-	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
+	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, fx_mul_pipe's ECP5 branch at W = 18 with tb/ecp5_mult18x18d.v, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
 
 # Planted fault: fx_mul with ties rounded up instead of to even (in fx_round, which
 # fx_mul rounds with), built from a copy in the build tree (rtl/ is untouched). The
