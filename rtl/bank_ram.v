@@ -36,6 +36,10 @@
  * With BANKS = 1 it is one strand_ram and the pair and second-write ports are unused
  * (rdata_e carries port A's word, rdata_o is 0).
  *
+ * NO_COLLIDE_A: the word port A or the pair read gives when its row was written in the
+ * same cycle is never used (strand_ram: a simulation gives a poisoned word then, which
+ * lockstep would catch if it were used).
+ *
  * Latency: 1 cycle per read (port B with B_REG: 2); throughput: BANKS writes and BANKS port-A reads a cycle
  * (one a bank), and one port-B read.
  */
@@ -46,7 +50,10 @@ module bank_ram #(
     parameter integer BLOCK_MIN = 64, // strand_ram's block RAM threshold (per bank)
     parameter [0:0]   READ_B    = 1'b1, // 0: no port B (rdata_b is 0)
     parameter integer BANKS     = 1,  // 1: one memory; 2: even and odd banks
-    parameter [0:0]   B_REG     = 1'b0 // 1: port B's word registered once more (latency 2)
+    parameter [0:0]   B_REG     = 1'b0, // 1: port B's word registered once more (latency 2)
+    // 1: a word port A or the pair read gives in the cycle its row is written is never used
+    // (strand_ram NO_COLLIDE_A: its block RAMs go without collision logic)
+    parameter [0:0]   NO_COLLIDE_A = 1'b0
 ) (
     input  wire             clk,
     input  wire             reset,    // only for the simulation check below (the memory is not reset)
@@ -74,7 +81,7 @@ module bank_ram #(
     generate
         if (BANKS == 1) begin : g_one
             wire [WIDTH-1:0] q_b;
-            strand_ram #(.WIDTH(WIDTH), .DEPTH(DEPTH), .ABITS(ABITS), .BLOCK_MIN(BLOCK_MIN), .READ_B(READ_B)) u_ram (
+            strand_ram #(.WIDTH(WIDTH), .DEPTH(DEPTH), .ABITS(ABITS), .BLOCK_MIN(BLOCK_MIN), .READ_B(READ_B), .NO_COLLIDE_A(NO_COLLIDE_A)) u_ram (
                 .clk(clk), .we(we), .waddr(waddr), .wdata(wdata),
                 .re_a(re_a), .raddr_a(raddr_a), .rdata_a(rdata_a),
                 .re_b(re_b), .raddr_b(raddr_b), .rdata_b(q_b));
@@ -105,7 +112,8 @@ module bank_ram #(
                 wire          w1   = we && waddr[0] == B;   // port 1 writes this bank
                 wire          w2   = we2 && waddr2[0] == B; // port 2 writes this bank
                 wire [RW-1:0] prow = b == 0 ? pe_row[RW-1:0] : po_row[RW-1:0];
-                strand_ram #(.WIDTH(WIDTH), .DEPTH(BDEPTH), .ABITS(RW), .BLOCK_MIN(BLOCK_MIN), .READ_B(READ_B)) u_ram (
+                strand_ram #(.WIDTH(WIDTH), .DEPTH(BDEPTH), .ABITS(RW), .BLOCK_MIN(BLOCK_MIN), .READ_B(READ_B),
+                             .NO_COLLIDE_A(NO_COLLIDE_A)) u_ram (
                     .clk(clk), .we(w1 || w2), .waddr(w2 ? w2_row[RW-1:0] : w1_row[RW-1:0]), .wdata(w2 ? wdata2 : wdata),
                     .re_a(re_a || pair_re), .raddr_a(pair_re ? prow : a_row[RW-1:0]), .rdata_a(q_a[b]),
                     .re_b(re_b), .raddr_b(b_row[RW-1:0]), .rdata_b(q_b[b]));

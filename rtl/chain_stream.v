@@ -310,8 +310,8 @@ module chain_stream #(
             if (FUSE != 0) begin : g_fuse_words
                 wire [NB-1:0] pass_e = {pass_held_e_all[u], pass_pin_e_all[u], pass_prev_e_all[u*DW +: DW], pass_pos_e_all[u*DW +: DW]};
                 wire [NB-1:0] pass_o = {pass_held_o_all[u], pass_pin_o_all[u], pass_prev_o_all[u*DW +: DW], pass_pos_o_all[u*DW +: DW]};
-                (* keep *) reg fused_u;
-                always @(posedge clk) fused_u <= fused_next;
+                reg fused_u;  // keep on the process: on the reg it would not stop the merge
+                (* keep *) always @(posedge clk) fused_u <= fused_next;
                 assign own_e = fused_u ? pass_e : mem_e;
                 assign own_o = fused_u ? pass_o : mem_o;
             end else begin : g_mem_words

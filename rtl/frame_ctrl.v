@@ -68,7 +68,6 @@ module frame_ctrl #(
     output wire             init_we_d,     // the init walk writes node init_addr_d in the next cycle
     output wire [AW-1:0]    init_addr_d,   //   (strand_core registers both beside each unit)
     output wire [AW-1:0]    init_addr_next, // the node the walk writes after that one (outside the walk: its second node)
-    output wire             init_node0,    // the walk writes a unit's node 0 now (outside the walk too: the first node)
     output wire [DIM*W-1:0] init_pos,
     output wire [DIM*W-1:0] init_prev
 );
@@ -111,7 +110,6 @@ module frame_ctrl #(
             reg [AW-1:0]    addr_q;
             reg [AW-1:0]    after_q;   // next_node(addr_q), kept a cycle ahead (below)
             reg [AW-1:0]    ahead_q;   // init_addr_next: next_node(after_q)
-            reg             node0_q;   // init_node0: addr_q's node bits are 0
             reg [CW-1:0]    count_q;
             reg [DIM*W-1:0] pos_q;
             // The walk's next position and its previous position are formed a cycle ahead and
@@ -126,8 +124,8 @@ module frame_ctrl #(
             // walking_q: phase == PH_INIT, a copy of the walk's own (the walk enters INIT only
             // from IDLE, by walk, and leaves it only at walk_end), so that the phase register,
             // placed by the frame's logic, is not on the walk's paths (into the adders below)
-            (* keep *) reg walking_q;
-            always @(posedge clk)
+            reg walking_q;
+            (* keep *) always @(posedge clk)
                 if (reset) walking_q <= 1'b0;
                 else if (phase == PH_IDLE && walk) walking_q <= 1'b1;
                 else if (walk_end) walking_q <= 1'b0;
@@ -153,9 +151,9 @@ module frame_ctrl #(
             // command's decode, which decides that start, reaches only the phase. The first
             // node's flag cannot come from that lookup (in the cycle before the walk the
             // address ahead is already the second node), so node_unit also keeps node 0's
-            // flag, and init_node0 picks it for the write of a unit's node 0.
+            // flag, and each unit picks it for the write of its node 0 (strand_core registers
+            // that choice beside the unit from init_addr_d).
             assign init_addr_next = ahead_q;
-            assign init_node0     = node0_q;
             localparam [AW-1:0] ADDR_ZERO = {AW{1'b0}};
             localparam [AW-1:0] ADDR_ONE  = next_node(ADDR_ZERO);
             // The walk's write in the next cycle (phase == PH_INIT then, and addr_q's next
@@ -169,13 +167,11 @@ module frame_ctrl #(
                     addr_q  <= ADDR_ZERO;
                     after_q <= ADDR_ONE;
                     ahead_q <= ADDR_ONE;
-                    node0_q <= 1'b1;
                     count_q <= {CW{1'b0}};
                 end else if (walking_q) begin
                     addr_q  <= walk_end ? ADDR_ZERO : after_q;
                     after_q <= walk_end ? ADDR_ONE : next_node(after_q);
                     ahead_q <= walk_end ? ADDR_ONE : next_node(after_q);
-                    node0_q <= walk_end || after_q[IW-1:0] == {IW{1'b0}};
                     count_q <= walk_end ? {CW{1'b0}} : count_q + 1'b1;
                 end
             end
@@ -186,7 +182,6 @@ module frame_ctrl #(
             assign init_we_d   = 1'b0;
             assign init_addr_d = {AW{1'b0}};
             assign init_addr_next = {AW{1'b0}};
-            assign init_node0     = 1'b0;
             assign init_pos  = {(DIM*W){1'b0}};
             assign init_prev = {(DIM*W){1'b0}};
             wire unused_walk = &{1'b0, start_pos, step_pos, prev_off};

