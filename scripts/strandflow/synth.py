@@ -306,10 +306,11 @@ def yosys(d, flow, params_, srcs, title, gen=GEN, record=None, pnr_seeds=(), off
                                   cpu_seconds=extra.get("cpu_seconds"), modules=stat_modules(stat)))
 
     recorded = stamp_fresh(stamp, key) and json.load(open(stamp)).get("recorded")
-    # A *_place flow's stamp taken from the record stands only while the record holds every
-    # place and route of it (below): with a seed or an argument added, its netlist must be made
-    # here (the record keeps none, and a file left in d may be another RTL's).
-    if recorded and flow.endswith("_place"):
+    # A *_place flow's stamp taken from the record stands, for a run that may place, only while
+    # the record holds every place and route of it (below): with a seed or an argument added,
+    # its netlist must be made here (the record keeps none, and a file left in d may be another
+    # RTL's). A report (offline) only reads the flow's cells: the stamp stands.
+    if recorded and flow.endswith("_place") and not offline:
         os.remove(stamp)
         recorded = False
     if stamp_fresh(stamp, key) and not (real and recorded):
