@@ -133,6 +133,16 @@ PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe
 # overused wires grew from its sixth iteration to its tenth (26,000 to 28,600) in 20 minutes here.
 ROUTER2 = ["4x256_pipe"]
 PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
+# The placer's timing weight (nextpnr-ecp5's --placer-heap-timingweight, default 10) for the
+# largest placed builds, the three-seed ones: on the Q10.8 6x256, seeds 1 to 3 placed at 86.3,
+# 85.0 and 87.9 MHz with the default and at 91.2, 92.0 and 90.3 with 30 (the same netlist), its
+# critical paths being mostly routing between a unit's block RAM, its multipliers and its
+# selects. On small builds it did not help (one seed each, the default's fmax first: cloth
+# 61.9 / 61.7, q10_1x256 111.6 / 109.5, 1x256_s4 54.2 / 52.1 MHz), so they keep the default.
+PLACER_TIMING_WEIGHT = 30
+TIMING_WEIGHTED = ["q10_4x256_pipe", "q10_6x256_pipe"]
+for _b in TIMING_WEIGHTED:
+    PNR_EXTRA[_b] = PNR_EXTRA.get(_b, []) + ["--placer-heap-timingweight", str(PLACER_TIMING_WEIGHT)]
 # Their place and route has a budget (seconds): make synth ends in hours, and a run stopped at its
 # budget is reported as not finished, with how far it got. That result is kept in the record like
 # any other (the budget is part of its key): to try again, on a faster machine or with a native
@@ -473,6 +483,9 @@ def report(bdir, gen, out, srcs):
       f"register to register), nextpnr-ecp5 `{' '.join(ECP5_ARGS)}`, seed(s) {', '.join(map(str, SEEDS))}"
       + (f" ({'; '.join(b + ': ' + (', '.join(map(str, v)) or 'not placed') for b, v in SERIAL_SEEDS.items())})"
          if SERIAL_SEEDS else "") + ". "
+      f"{', '.join(TIMING_WEIGHTED)} are placed with `--placer-heap-timingweight {PLACER_TIMING_WEIGHT}` "
+      "(nextpnr's default is 10: the placer weighs timing criticality against wire length three times as "
+      "much, these builds' critical paths being mostly routing); the others keep nextpnr's default. "
       "fmax is nextpnr's post-route figure for `clk` (the goal is 100 MHz); DPR16X4 is LUT RAM "
       "(16 words x 4 bits), DP16KD block RAM. The logic slots are nextpnr's count of the slices' "
       "combinational slots it filled (TRELLIS_COMB, of 83,640; first seed): LUT4s, carry cells and LUT RAM all "
@@ -726,7 +739,9 @@ def report(bdir, gen, out, srcs):
         w(f"# {flow}:")
         for line in cmds:
             w("  " + line)
-    w("# then, per seed: " + " ".join(os.path.basename(c) for c in pnr_cmd("ecp5", "<seed>")))
+    w("# then, per seed: " + " ".join(os.path.basename(c) for c in pnr_cmd("ecp5", "<seed>"))
+      + f"  (+ --placer-heap-timingweight {PLACER_TIMING_WEIGHT} for the builds named above; --router router2 for "
+      + ", ".join(ROUTER2) + ")")
     w("#            and " + " ".join(pnr_cmd("ice40", "<seed>")))
     w("```")
     w("")
