@@ -135,7 +135,7 @@ ROUTER2 = ["4x256_pipe"]
 PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
 # The placer's timing weight (nextpnr-ecp5's --placer-heap-timingweight, default 10) for the
 # largest placed builds, the three-seed ones: on the Q10.8 6x256, seeds 1 to 3 placed at 86.3,
-# 85.0 and 87.9 MHz with the default and at 91.2, 92.0 and 90.3 with 30 (the same netlist), its
+# 85.0 and 87.9 MHz with the default and at 91.2, 92.0 and 90.25 with 30 (the same netlist), its
 # critical paths being mostly routing between a unit's block RAM, its multipliers and its
 # selects. On small builds it did not help (one seed each, the default's fmax first: cloth
 # 61.9 / 61.7, q10_1x256 111.6 / 109.5, 1x256_s4 54.2 / 52.1 MHz), so they keep the default.
