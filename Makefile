@@ -254,10 +254,13 @@ GATESIM_SCENES := tb/scenes/chain_q10_8.scene:serial tb/scenes/chain_q10_8.scene
                   tb/scenes/chain_slot_bound.scene:redblack
 gatesim: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
+	@python3 scripts/bram_check.py --plant
 	@python3 scripts/gatesim.py --yosys $(GATESIM_YOSYS) --plant --doc docs/verification.md $(GATESIM_SCENES)
 
-# make test: the pipelined Q10.8 chain's netlist (the yosys on PATH) in lockstep
+# make test: the block RAM model against Yosys's mapping (tb/bram_cases.v), with its planted
+# faults; then the pipelined Q10.8 chain's netlist (the yosys on PATH) in lockstep
 test-gatesim: $(STRAND) $(GEN_HDRS)
+	@python3 scripts/bram_check.py --plant
 	@python3 scripts/gatesim.py tb/scenes/chain_q10_8.scene:redblack
 
 # The traces make wave opens: save files name only signals the trace has, 10 ns a cycle,
@@ -367,7 +370,14 @@ lint-rtl: $(GEN_HDRS) $(STRAND)
 	  if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done
 	@echo "lint-rtl: clean (verilator --lint-only -Wall on strand_core's defaults, $$(wc -l < $(BUILD)/lint-builds.txt) scene builds and the board tops; iverilog -Wall)"
 
-lint: lint-c lint-rtl $(if $(wildcard tb/units.mk),lint-units)
+# the block RAM model that simulates Yosys's netlists and its check's bench
+lint-cell-models:
+	@verilator --lint-only -Wall tb/ecp5_dp16kd.v --top-module DP16KD
+	@verilator --lint-only -Wall tb/bram_cases.v --top-module bram_cases
+	@out=$$(iverilog -Wall -g2005 -o /dev/null tb/ecp5_dp16kd.v tb/bram_cases.v 2>&1); if [ -n "$$out" ]; then echo "$$out"; exit 1; fi
+	@echo "lint-cell-models: tb/ecp5_dp16kd.v and tb/bram_cases.v are clean (verilator -Wall, iverilog -Wall)"
+
+lint: lint-c lint-rtl lint-cell-models $(if $(wildcard tb/units.mk),lint-units)
 
 # ---- everything ----
 

@@ -9,8 +9,10 @@ constraint order); Yosys maps sim_top (strand_core with its observation port, DE
 build's parameters) to the ECP5's cells with make synth's place-and-route flow (`synth_ecp5
 -run :check`: LUT4, PFUMX, L6MUX21, CCU2C, TRELLIS_FF, TRELLIS_DPR16X4, DP16KD, MULT18X18D) and
 writes the netlist; Verilator builds the harness (tb/harness.cpp) on that netlist and the
-Yosys release's own simulation models of the cells (share/ecp5/cells_sim.v; the multiplier,
-which Yosys ships as a black box, from tb/ecp5_mult18x18d.v); the harness runs the scene in
+Yosys release's own simulation models of the cells (share/ecp5/cells_sim.v); the cells that
+Yosys ships as black boxes only, the multiplier and the block RAM, come from
+tb/ecp5_mult18x18d.v and tb/ecp5_dp16kd.v (a netlist with a cell that has no model with
+behaviour is refused: a black box's outputs would never change); the harness runs the scene in
 lockstep with model/cycle.c. A pass says that this synthesis kept the design's behaviour on
 that scene, cycle for cycle. (make synth places the core with DEBUG = 0 behind its shell: the
 same tool and flow on a slightly different design, the observation port left out.)
@@ -43,7 +45,41 @@ from strandflow.synth import find_top, flat_counts, load_stat  # noqa: E402
 import doc_region  # noqa: E402
 
 TIMEOUT = 3600
-MULT_MODEL = "tb/ecp5_mult18x18d.v"
+# the cells Yosys ships as black boxes only (no behaviour), modelled in tb/ from Lattice's descriptions
+CELL_MODELS = ["tb/ecp5_mult18x18d.v", "tb/ecp5_dp16kd.v"]
+MODULE_RE = re.compile(r"^[ \t]*module[ \t]+(\\?[\w$]+)", re.M)
+BLACKBOX_RE = re.compile(r"^\(\*[^*]*\bblackbox\b[^*]*\*\)\s*\n\s*module\s+(\w+).*?^endmodule\b[^\n]*\n", re.M | re.S)
+
+
+def cell_library(share, out):
+    """The cell models for a netlist's simulation: the Yosys release's cells_sim.v with its black
+    boxes left out (a black box simulates as a cell whose outputs never change), written to
+    out/cells_sim.v, and the models of CELL_MODELS. Returns (the files, the set of modules
+    with behaviour)."""
+    text = open(os.path.join(share, "cells_sim.v")).read()
+    body = BLACKBOX_RE.sub("", text)
+    # its includes (the flip-flop and I/O cells) from where the release keeps them
+    body = re.sub(r'`include "([^"/]+)"', lambda m: f'`include "{os.path.join(share, m.group(1))}"', body)
+    lib = os.path.join(out, "cells_sim.v")
+    if not os.path.exists(lib) or open(lib).read() != body:
+        with open(lib, "w") as f:
+            f.write(body)
+    defined = set(MODULE_RE.findall(body))
+    for inc in re.findall(r'`include "([^"]+)"', body):
+        if os.path.exists(inc):
+            defined |= set(MODULE_RE.findall(open(inc).read()))
+    for model in CELL_MODELS:
+        defined |= set(MODULE_RE.findall(open(os.path.join(ROOT, model)).read()))
+    return [lib] + [os.path.join(ROOT, m) for m in CELL_MODELS], defined
+
+
+def check_cells(cells, defined, share, netlist):
+    """Every cell type of the netlist must have a model with behaviour (a black box's outputs
+    would stay constant, and lockstep would blame the design for the missing model)."""
+    missing = sorted(t for t in cells if t not in defined)
+    if missing:
+        raise Failure(f"{os.path.relpath(netlist, ROOT)}: no simulation model of {', '.join(missing)} "
+                      f"({share}/cells_sim.v gives none, or only a black box; {', '.join(CELL_MODELS)} neither)")
 
 
 def yosys_of(which):
@@ -160,14 +196,15 @@ def one(which, spec, frames, planted):
     os.makedirs(out, exist_ok=True)
     how = synthesise(which, out, gen_dir)
     _, share = yosys_of(which)
-    models = [os.path.join(share, "cells_sim.v"), os.path.join(ROOT, MULT_MODEL)]
     netlist = os.path.join(out, "netlist.v")
+    models, defined = cell_library(share, os.path.dirname(out))
+    mods = load_stat(os.path.join(out, "netlist.stat.json"))
+    counts = flat_counts(mods, find_top(mods, "sim_top"))
+    check_cells(counts, defined, share, netlist)
     # compiled without optimisation (HARNESS_OPT=fast): a netlist's C++ is large, a scene's run short
     exe = flow_build.harness(os.path.join(out, "harness"), vh, h, opt="fast", netlist=[netlist] + models)
     ok, head = run_lockstep(exe, scene, order, frames)
     results = [(ok, f"{'PASS' if ok else 'FAIL'} gatesim {tag}: netlist ({how}) in lockstep: {head}")]
-    mods = load_stat(os.path.join(out, "netlist.stat.json"))
-    counts = flat_counts(mods, find_top(mods, "sim_top"))
     row = dict(scene=scene, order=order or "the scene's", tool=tool_version(yosys_of(which)[0]), cells=counts,
                lockstep=head if ok else f"**{head}**", caught=None)
     if planted:
