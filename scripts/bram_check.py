@@ -43,8 +43,8 @@ WHICH = "debian"   # make synth's Yosys (gatesim.yosys_of)
 # planted faults: (name, the model's text, what replaces it)
 PLANTS = [
     ("read before write gives the new word",
-     "            else if (BEFORE_A)\n                latch_a <= old_a;",
-     "            else if (BEFORE_A)\n                latch_a <= word_at(DATA_WIDTH_A, ada);"),
+     "shows_new ? new_word : shows_old ? old : held;",
+     "shows_new ? new_word : shows_old ? new_word : held;"),
     ("byte enables ignored",
      "byte_enables = width == 36 ? ad[3:0] : width == 18 ? {2'b00, ad[1:0]} : 4'b1111;",
      "byte_enables = 4'b1111;"),

@@ -328,6 +328,14 @@ module DP16KD #(
         end
     endtask
 
+    // a port's output latch after an edge: held when the port is idle; a read gives the old word
+    // (the bits the other port writes inverted); a write gives what WRITEMODE says (new: the
+    // word as written, after this edge's writes)
+    function [35:0] port_output(input [35:0] held, input reads, input writes, input shows_new, input shows_old,
+                                input [35:0] old, input [35:0] clash, input [35:0] new_word);
+        port_output = !reads ? held : !writes ? old ^ clash : shows_new ? new_word : shows_old ? old : held;
+    endfunction
+
     // the ports: a 36-bit port A only writes (DIB carries its high half), a 36-bit port B only
     // reads (DOA carries its low half)
     wire en_a = CEA && {CSA2, CSA1, CSA0} == 3'b000;
@@ -360,32 +368,16 @@ module DP16KD #(
         if (writes_a && writes_b && |(written_bits(DATA_WIDTH_A, ada, DATA_WIDTH_B, adb, be_b) &
                                       written_bits(DATA_WIDTH_A, ada, DATA_WIDTH_A, ada, be_a)))
             write_word(DATA_WIDTH_A, ada, ~din_a, be_a);  // both ports write a byte: undefined, poisoned
-        if (reads_a) begin
-            if (!writes_a)
-                latch_a <= old_a ^ clash_a;
-            else if (THROUGH_A)
-                latch_a <= word_at(DATA_WIDTH_A, ada);
-            else if (BEFORE_A)
-                latch_a <= old_a;
-        end
-        if (reads_b) begin
-            if (!writes_b)
-                latch_b <= old_b ^ clash_b;
-            else if (THROUGH_B)
-                latch_b <= word_at(DATA_WIDTH_B, adb);
-            else if (BEFORE_B)
-                latch_b <= old_b;
-        end
+        latch_a <= port_output(latch_a, reads_a, writes_a, THROUGH_A, BEFORE_A, old_a, clash_a,
+                               word_at(DATA_WIDTH_A, ada));
+        latch_b <= port_output(latch_b, reads_b, writes_b, THROUGH_B, BEFORE_B, old_b, clash_b,
+                               word_at(DATA_WIDTH_B, adb));
     end
     /* verilator lint_on BLKSEQ */
     // one clock for both ports (the collision rules above compare the two ports at one edge):
     // the edge of CLKA clocks port B as well, so a port B in use must see the same edges (an
     // unused port B has its clock and enable tied low)
-    always @(posedge CLKA) if (en_b && CLKB !== 1'b1) begin
-        $display("FAIL DP16KD model: port B is used off CLKA's edges in %m (one common clock is modelled)");
-        $fatal(1);
-    end
-    always @(posedge CLKB) if (en_b && CLKA !== 1'b1) begin
+    always @(posedge CLKA or posedge CLKB) if (en_b && CLKA !== CLKB) begin
         $display("FAIL DP16KD model: port B is used off CLKA's edges in %m (one common clock is modelled)");
         $fatal(1);
     end
