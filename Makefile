@@ -36,6 +36,9 @@ RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 # apart so that the scenes of the other steps keep their builds.
 PREV_SCENES := $(wildcard tb/scenes/previous/*.scene)
 PREV_FRAMES := rope_centred:20 chain_pair_q16:8 graph3d_held:30   # Icarus frames of each
+# the normalised distance datapath ([format] mantissa > 0): in both orders, kept apart likewise
+MANT_SCENES := $(wildcard tb/scenes/mantissa/*.scene)
+MANT_FRAMES := chain_centred_q16:30 chain_pair_3d_mb8:60 graph3d_mb12:60   # Icarus frames of each
 # The Icarus frame bench runs the default scene's first 60 frames (its 240 serial frames are 742k
 # cycles, a minute of Icarus); lockstep runs all of them under Verilator.
 REF000_BENCH_FRAMES := 60
@@ -239,6 +242,7 @@ test-lockstep: $(STRAND) $(GEN_HDRS)
 	@python3 scripts/lockstep_fuzz.py 50 --seed 1 --builds 7 $(foreach s,$(LOCKSTEP_SCENES),--scene $(s)) --redblack --faults --reset-seeds 3 \
 	    --late-pins-scene tb/scenes/chain_pinned_moving.scene:16
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
+	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(MANT_SCENES),--scene $(s)) --redblack
 
 # ---- the synthesised netlist in lockstep (scripts/gatesim.py) ----
 # make gatesim: one build of each kind (serial and pipelined, centred and pairwise, 2D and 3D,
@@ -337,7 +341,9 @@ test-rtl-frames: $(STRAND) $(GEN_HDRS)
 	    f="''"; case $$s in sim/scenes/ref000_rope.scene) f=$(REF000_BENCH_FRAMES);; *_slot_bound.scene) [ $$o = serial ] && continue;; esac; \
 	    echo "$$s $$f $$o"; done; done; \
 	  for s in $(PREV_FRAMES); do for o in serial redblack; do \
-	    echo "tb/scenes/previous/$${s%%:*}.scene $${s##*:} $$o"; done; done; } | xargs -P $(JOBS) -L 1 scripts/top_frames.sh
+	    echo "tb/scenes/previous/$${s%%:*}.scene $${s##*:} $$o"; done; done; \
+	  for s in $(MANT_FRAMES); do for o in serial redblack; do \
+	    echo "tb/scenes/mantissa/$${s%%:*}.scene $${s##*:} $$o"; done; done; } | xargs -P $(JOBS) -L 1 scripts/top_frames.sh
 	@# the bench checks the status as well as the positions: FEC one cycle late (tb/faults.py delay) must fail it
 	@python3 tb/faults.py delay $(BUILD)/faults/frames_delay && \
 	  out=$$(HW_DIR=$(BUILD)/hw/fault scripts/top_frames.sh tb/scenes/chain_q10_8.scene 5 "" $(BUILD)/faults/frames_delay); \
@@ -358,7 +364,7 @@ LINT_SCENES := $(sort $(RTL_SCENES) $(foreach s,$(LOCKSTEP_SCENES),$(firstword $
 lint-rtl: $(GEN_HDRS) $(STRAND)
 	@verilator --lint-only -Wall -I$(GEN) -Irtl $(TOP_SRC) --top-module strand_core
 	@{ for s in $(LINT_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; \
-	   for s in $(PREV_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; } > $(BUILD)/lint-builds.all
+	   for s in $(PREV_SCENES) $(MANT_SCENES); do for o in serial redblack; do $(STRAND) info $$s --vflags --order $$o || exit 1; done; done; } > $(BUILD)/lint-builds.all
 	@sort -u $(BUILD)/lint-builds.all > $(BUILD)/lint-builds.txt  # (a pipe into sort would hide a refused build)
 	@# JOBS builds at once (a line of lint-builds.txt is one build's -G flags)
 	@xargs -P $(JOBS) -d '\n' -n 1 sh -c 'verilator --lint-only -Wall -I$(GEN) -Irtl $$1 $(TOP_SRC) --top-module strand_core || { echo "lint-rtl: with $$1"; exit 1; }' lint-rtl < $(BUILD)/lint-builds.txt

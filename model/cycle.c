@@ -38,7 +38,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     snprintf(sc->name, sizeof sc->name, "rtl");
     sc->dim = hp->dim;
     sc->number = NUMBER_FIXED;
-    sc->fmt = (fx_format){hp->w, hp->f, hp->sqrt_bits, hp->div_bits};
+    sc->fmt = (fx_format){hp->w, hp->f, hp->sqrt_bits, hp->div_bits, hp->mantissa};
     sc->dt = 1;
     sc->substeps = hp->substeps;
     sc->iterations = hp->iter;

@@ -13,6 +13,8 @@
  *   UNIT(a, b, dz)         a / b for |a| <= b, a unit-vector component (fixed: W-2 fraction bits)
  *   UMUL(a, u)             a times a unit-vector component
  *   LEG(h, d, miss)        sqrt(h^2 - |d|^2) (fixed: fx_sqrt of the exact difference); *miss if |d| > h
+ *   ALONG(d, rest, t)      t = d rest / |d|, the vector of length rest along d; false when |d| = 0
+ *                          (fixed: fx_mul(d, fx_div(rest, LEN(d))), or with a mantissa fx_along)
  *   FROM(x)                a scene constant in this number type
  *   LESS(a, b)             a < b
  *
@@ -243,20 +245,17 @@ static bool P(along_previous)(SIM *s, const NUM q[3], int from, int to, NUM rest
 /* The point at distance `dist` from node `from`, toward node c. False for a zero length. */
 static bool P(toward)(SIM *s, int from, int c, NUM out[3])
 {
-    NUM d[3] = {FROM(0), FROM(0), FROM(0)};
-    NUM ratio;
-    bool zero;
+    NUM d[3] = {FROM(0), FROM(0), FROM(0)}, t[3];
     for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[c][k], s->pos[from][k]);
     if (s->sc->projection == PROJECTION_PREVIOUS && P(along_previous)(s, d, from, c, s->dist, out)) {
         for (int k = 0; k < s->dim; k++) out[k] = ADD(s->pos[from][k], out[k]);
         return true;
     }
-    ratio = DIV(s->dist, LEN(d), &zero);
-    if (zero) {
+    if (!ALONG(d, s->dist, t)) {
         s->skipped++;
         return false;
     }
-    for (int k = 0; k < s->dim; k++) out[k] = ADD(s->pos[from][k], MUL(d[k], ratio));
+    for (int k = 0; k < s->dim; k++) out[k] = ADD(s->pos[from][k], t[k]);
     return true;
 }
 
@@ -306,21 +305,19 @@ void P(pair_edge)(SIM *s, int e)
 {
     const scene_edge *ed = &s->sc->edges[e];
     int a = ed->a, b = ed->b;
-    bool fa = P(node_fixed)(s, a), fb = P(node_fixed)(s, b), zero;
-    NUM d[3] = {FROM(0), FROM(0), FROM(0)}, moved[3];
-    NUM ratio;
+    bool fa = P(node_fixed)(s, a), fb = P(node_fixed)(s, b);
+    NUM d[3] = {FROM(0), FROM(0), FROM(0)}, moved[3], t[3];
     if (fa && fb) return;
     for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[b][k], s->pos[a][k]);
     if (s->sc->projection == PROJECTION_PREVIOUS && P(along_previous)(s, d, a, b, s->rest[e], moved)) {
         for (int k = 0; k < s->dim; k++) P(share)(s, a, b, fa, fb, k, SUB(d[k], moved[k]));
         return;
     }
-    ratio = DIV(s->rest[e], LEN(d), &zero);
-    if (zero) {
+    if (!ALONG(d, s->rest[e], t)) {
         s->skipped++;
         return;
     }
-    for (int k = 0; k < s->dim; k++) P(share)(s, a, b, fa, fb, k, SUB(d[k], MUL(d[k], ratio)));
+    for (int k = 0; k < s->dim; k++) P(share)(s, a, b, fa, fb, k, SUB(d[k], t[k]));
 }
 
 /*

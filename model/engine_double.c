@@ -37,5 +37,15 @@ static inline double dbl_leg(double h, const double d[3], bool *miss)
 #define FROM(x) ((double)(x))
 #define LESS(a, b) ((a) < (b))
 #define MAC2(a, b, c, d) ((a) * (b) + (c) * (d))
+#define ALONG(d, rest, t) dbl_along((d), (rest), (t))
+
+/* t = d (rest / |d|), false when |d| = 0 */
+static inline bool dbl_along(const double d[3], double rest, double t[3])
+{
+    bool zero;
+    double ratio = dbl_div(rest, LEN(d), &zero);
+    for (int k = 0; k < 3; k++) t[k] = d[k] * ratio;
+    return !zero;
+}
 
 #include "engine_body.h"

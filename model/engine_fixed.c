@@ -24,5 +24,17 @@
 #define FROM(x) fx_from_double(F_, (x))
 #define LESS(a, b) ((a) < (b))
 #define MAC2(a, b, c, d) fx_mac2(F_, (a), (b), (c), (d))
+#define ALONG(d, rest, t) along(s, (d), (rest), (t))
+
+/* t = d rest / |d|: the full-width root, divide and products, or the normalised datapath */
+static bool along(const sim_fx *s, const fx_t d[3], fx_t rest, fx_t t[3])
+{
+    bool zero;
+    fx_t ratio;
+    if (s->fmt.mantissa) return fx_along(&s->fmt, s->dim, d, rest, t);
+    ratio = DIV(rest, LEN(d), &zero);
+    for (int k = 0; k < 3; k++) t[k] = k < s->dim ? MUL(d[k], ratio) : 0;
+    return !zero;
+}
 
 #include "engine_body.h"

@@ -20,6 +20,8 @@ const char *fx_format_check(const fx_format *fmt)
         return "sqrt_bits must be 1..width-1";
     if (fmt->div_bits < 1 || fmt->div_bits > fmt->width - 1)
         return "div_bits must be 1..width-1";
+    if (fmt->mantissa != 0 && (fmt->mantissa < FX_MIN_MANTISSA || fmt->mantissa > FX_MAX_MANTISSA))
+        return "mantissa must be 0 (the full-width datapath) or 6..20 bits";
     return 0;
 }
 
@@ -128,4 +130,107 @@ bool fx_fits(const fx_format *fmt, double v)
 {
     double scaled = v * ldexp(1.0, fmt->frac);
     return scaled <= (double)fx_max(fmt) + 0.5 && scaled >= (double)fx_min(fmt) - 0.5;
+}
+
+/* ---- the normalised distance datapath (fixed.h, fx_along) ---- */
+
+int fx_msb(uint64_t v)
+{
+    int b = 0;
+    while (v >>= 1) b++;
+    return b;
+}
+
+/* An unsigned mantissa rounded out of v by n bits (n > 0) or shifted left (n <= 0), kept below 2^MB. */
+static uint64_t mant_unsigned(int mb, uint64_t v, int n)
+{
+    uint64_t top = (UINT64_C(1) << mb) - 1;
+    uint64_t r = n > 0 ? (uint64_t)fx_round_shift((int64_t)v, n) : v << -n;
+    return r > top ? top : r;
+}
+
+int fx_norm_lanes(int mb, int dim, const fx_t d[3], int64_t m[3])
+{
+    uint64_t any = 0, top = (UINT64_C(1) << mb) - 1;
+    int s;
+    for (int k = 0; k < 3; k++) m[k] = 0;
+    for (int k = 0; k < dim; k++) any |= (uint64_t)(d[k] < 0 ? -(int64_t)d[k] : d[k]);
+    if (!any) return INT32_MIN;
+    s = fx_msb(any) - (mb - 1);
+    for (int k = 0; k < dim; k++) {
+        int64_t v = s > 0 ? fx_round_shift(d[k], s) : (int64_t)d[k] * (INT64_C(1) << -s);
+        m[k] = v > (int64_t)top ? (int64_t)top : v; /* rounding up to 2^MB: clamped; -2^MB fits */
+    }
+    return s;
+}
+
+/*
+ * The table entry for index idx = {p, f}: the interval of v it covers is 2^p [1 + f/2^(T-1),
+ * 1 + (f+1)/2^(T-1)), its middle vm = 2^p (2^T + 2f + 1) / 2^T = n / 2^T. Y0 = 2^MB / sqrt(vm) in
+ * integers: Z = floor(2^(2MB+T+2) / n), Y0 = (isqrt(Z) + 1) / 2 (isqrt(Z) ~ 2 sqrt(2^(2MB+T) / n),
+ * so this rounds it to nearest but for the floor of Z); C0 = Y0^3 2^-2MB rounded, clamped.
+ */
+void fx_rsqrt_seed(int mb, int idx, uint32_t *y0, uint32_t *c0)
+{
+    int t = fx_rsqrt_table_bits(mb);
+    int p = idx >> (t - 1), f = idx & ((1 << (t - 1)) - 1);
+    uint64_t n = ((UINT64_C(1) << t) + 2 * (uint64_t)f + 1) << p;
+    uint64_t z = (UINT64_C(1) << (2 * mb + t + 2)) / n, r = 0, y, cube;
+    for (int bit = 31; bit >= 0; bit--) { /* floor(sqrt(z)), z < 2^44 */
+        uint64_t tr = r | (UINT64_C(1) << bit);
+        if (tr * tr <= z) r = tr;
+    }
+    y = (r + 1) >> 1;
+    cube = y * y * y; /* < 2^(3MB) <= 2^60 */
+    *y0 = (uint32_t)y;
+    *c0 = (uint32_t)mant_unsigned(mb, cube, 2 * mb);
+}
+
+uint32_t fx_rsqrt_norm(int mb, uint64_t x, int *j)
+{
+    int lx = fx_msb(x), t = fx_rsqrt_table_bits(mb);
+    int p = lx & 1, sh = lx - (mb - 1);
+    uint64_t xr = mant_unsigned(mb, x, sh), xt = x >> sh;
+    int idx = (p << (t - 1)) | (int)((xt >> (mb - t)) & ((UINT64_C(1) << (t - 1)) - 1));
+    uint32_t y0, c0;
+    int64_t n, y1;
+    fx_rsqrt_seed(mb, idx, &y0, &c0);
+    *j = lx >> 1;
+    n = 3 * (int64_t)y0 * (INT64_C(1) << (mb - 1)) - (int64_t)(xr * c0) * (1 << p);
+    y1 = fx_round_shift(n, mb);
+    if (y1 < 0) y1 = 0;
+    if (y1 > (INT64_C(1) << mb) - 1) y1 = (INT64_C(1) << mb) - 1;
+    return (uint32_t)y1;
+}
+
+uint32_t fx_norm_rest(int mb, uint32_t rest, int *er)
+{
+    *er = fx_msb(rest > 1 ? rest : 1) - (mb - 1);
+    return (uint32_t)mant_unsigned(mb, rest, *er);
+}
+
+fx_t fx_denorm(const fx_format *fmt, int64_t prod, int sh)
+{
+    if (sh > 0) return fx_sat(fmt, fx_round_shift(prod, sh));
+    /* a left shift: |prod| < 2^(2MB+1) and sh >= 2MB-1-W, so the result stays below 2^62 */
+    return fx_sat(fmt, prod * (INT64_C(1) << -sh));
+}
+
+bool fx_along(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest, fx_t t[3])
+{
+    const int mb = fmt->mantissa;
+    int64_t m[3];
+    uint64_t x = 0, q;
+    uint32_t y1, r, qm;
+    int j, er, b;
+    for (int k = 0; k < 3; k++) t[k] = 0;
+    if (fx_norm_lanes(mb, dim, d, m) == INT32_MIN) return false;
+    for (int k = 0; k < dim; k++) x += (uint64_t)(m[k] * m[k]);
+    y1 = fx_rsqrt_norm(mb, x, &j);
+    r = fx_norm_rest(mb, (uint32_t)rest & (uint32_t)(((uint64_t)1 << fmt->width) - 1), &er); /* the W-bit word, unsigned */
+    q = (uint64_t)r * y1;
+    b = q >> (2 * mb - 1) ? 1 : 0;
+    qm = (uint32_t)mant_unsigned(mb, q, mb - 1 + b);
+    for (int k = 0; k < dim; k++) t[k] = fx_denorm(fmt, m[k] * (int64_t)qm, j + 1 - b - er);
+    return true;
 }

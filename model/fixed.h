@@ -19,6 +19,9 @@
  *  - Divide: quotient round(num * 2^F / den) of two non-negative values, DIV_BITS
  *    magnitude bits from bit W-2 down plus one rounding iteration, saturating at
  *    2^(W-1)-1. Division by zero is flagged; callers skip the correction.
+ *  - The normalised distance datapath (mantissa = MB > 0): a constraint's vector of
+ *    length rest along d, computed on MB-bit mantissas that share one exponent
+ *    (fx_along below; docs/model.md, "Positions wide, links narrow").
  */
 #ifndef STRAND_FIXED_H
 #define STRAND_FIXED_H
@@ -42,7 +45,14 @@ typedef struct {
     int frac;      /* F: fraction bits, 1..W-2 */
     int sqrt_bits; /* root magnitude bits resolved, 1..W-1 (W-1 = full precision) */
     int div_bits;  /* quotient magnitude bits resolved, 1..W-1 (W-1 = full precision) */
+    int mantissa;  /* MB: 0 the full-width root and divide, else FX_MIN_MANTISSA..FX_MAX_MANTISSA
+                      significant bits of the normalised distance datapath (fx_along) */
 } fx_format;
+
+/* The normalised datapath's mantissa widths: MB + 1-bit signed words, so MB = 17 makes every
+   product one 18 x 18 multiplier; 20 keeps the seed table's cube within 64 bits. */
+#define FX_MIN_MANTISSA 6
+#define FX_MAX_MANTISSA 20
 
 /* NULL if the format is valid, else a static message saying what is wrong. */
 const char *fx_format_check(const fx_format *fmt);
@@ -145,6 +155,48 @@ static inline fx_t fx_mul_unit(const fx_format *fmt, fx_t a, fx_t u)
     return fx_sat(fmt, fx_round_shift((int64_t)a * u, fmt->width - 2));
 }
 fx_t fx_unit_div(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero);
+/*
+ * The normalised distance datapath (fmt->mantissa = MB > 0). fx_along gives t, the vector
+ * of length `rest` along d (t = d rest / |d|, each lane rounded once into Q.F and
+ * saturated): the centred rule's target is P + t, the pairwise rule's excess d - t. It
+ * returns false when d = 0 (no direction: the caller skips the correction), as the full-
+ * width datapath's divide-by-zero flag does. Every step is an integer operation the RTL
+ * mirrors (rtl/fx_norm.v, fx_rsqrt.v, fx_denorm.v inside toward_pipe); "round" is ties to
+ * even, "clamp" keeps an unsigned mantissa below 2^MB:
+ *
+ *  1. normalise (fx_norm_lanes): L = the leading bit of |d.x| | |d.y| | |d.z|, s = L - (MB-1),
+ *     m_k = d_k 2^-s rounded (s > 0) or exact (s <= 0), positive ones clamped to 2^MB - 1:
+ *     the largest |m_k| has MB significant bits, every m_k fits MB + 1 bits signed.
+ *  2. x = sum m_k^2, exact, in [2^(2MB-2), 3 2^(2MB)).
+ *  3. reciprocal root (fx_rsqrt_norm): Lx = x's leading bit, J = Lx / 2, p = Lx mod 2 (so
+ *     v = x / 4^J is in [1, 4), v >= 2 when p = 1); x' = x 2^-(Lx-MB+1) rounded and clamped (MB
+ *     bits, v = x' 2^p / 2^(MB-1)); the seed Y0, C0 = Y0^3 (fx_rsqrt_seed) from a table of
+ *     2^T entries, T = MB/2 + 1, indexed by p and the T - 1 bits of x below its leading one;
+ *     one Newton step Y1 = round((3 Y0 2^(MB-1) - x' C0 2^p) / 2^MB), clamped: Y1 / 2^MB is
+ *     1 / sqrt(v) to about 1.5 2^-(2T+2) + 2^-MB.
+ *  4. rest (fx_norm_rest): Lr = rest's leading bit (0 for rest <= 1), er = Lr - (MB-1), R =
+ *     rest 2^-er rounded and clamped (MB bits; 0 for rest = 0).
+ *  5. the ratio's mantissa: Q = R Y1 (exact, < 2^(2MB)), b = Q >= 2^(2MB-1),
+ *     Qm = Q 2^-(MB-1+b) rounded and clamped (MB bits).
+ *  6. back into the format (fx_denorm): t_k = m_k Qm 2^-sh rounded (sh > 0) or shifted left
+ *     (sh <= 0), saturated, with sh = J + 1 - b - er, in [2MB-1-W, 2MB].
+ * s cancels: t = m rest / |m|. Error: a few 2^-MB of |t| (docs/model.md has the bound).
+ */
+int fx_msb(uint64_t v); /* floor(log2 v), v > 0 */
+/* Step 1: m[0..dim-1] from d; returns the shift s, or INT32_MIN (with m = 0) when d = 0. */
+int fx_norm_lanes(int mb, int dim, const fx_t d[3], int64_t m[3]);
+/* The seed table's index bits for MB, and its entry idx: *y0 = Y0 and *c0 = C0 (step 3). */
+static inline int fx_rsqrt_table_bits(int mb) { return mb / 2 + 1; }
+void fx_rsqrt_seed(int mb, int idx, uint32_t *y0, uint32_t *c0);
+/* Step 3: Y1 for x in [2^(2MB-2), 2^(2MB+2)); *j = J. */
+uint32_t fx_rsqrt_norm(int mb, uint64_t x, int *j);
+/* Step 4: R for rest >= 0 (unsigned Q.F); *er = er. */
+uint32_t fx_norm_rest(int mb, uint32_t rest, int *er);
+/* Step 6 for one lane: the product P = m_k Qm, its shift sh. */
+fx_t fx_denorm(const fx_format *fmt, int64_t prod, int sh);
+/* Steps 1-6. */
+bool fx_along(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest, fx_t t[3]);
+
 /* Conversions for scene constants and reports (not used inside the datapath). */
 fx_t fx_from_double(const fx_format *fmt, double v);
 double fx_to_double(const fx_format *fmt, fx_t v);

@@ -75,6 +75,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
     }
     hp->sqrt_bits = sc->fmt.sqrt_bits;
     hp->div_bits = sc->fmt.div_bits;
+    hp->mantissa = sc->fmt.mantissa;
     hp->iter = sc->iterations;
     hp->substeps = sc->substeps;
     hp->en_gravity = sc->en_gravity;

@@ -365,6 +365,7 @@ static int handler(void *user, const char *section, const char *key, const char 
         if (!strcmp(key, "frac")) return parse_int(p, key, value, 1, FX_MAX_WIDTH - 2, &sc->fmt.frac);
         if (!strcmp(key, "sqrt_bits")) return parse_int(p, key, value, 1, FX_MAX_WIDTH - 1, &sc->fmt.sqrt_bits);
         if (!strcmp(key, "div_bits")) return parse_int(p, key, value, 1, FX_MAX_WIDTH - 1, &sc->fmt.div_bits);
+        if (!strcmp(key, "mantissa")) return parse_int(p, key, value, 0, FX_MAX_MANTISSA, &sc->fmt.mantissa);
         if (!strcmp(key, "pipe_steps")) return parse_int(p, key, value, 1, 4, &sc->pipe_steps);
         break;
     case S_TIME:
@@ -681,7 +682,8 @@ static bool finish(parser *p)
     if (!key_line(p, S_FORMAT, "div_bits")) sc->fmt.div_bits = sc->fmt.width - 1;
     if (!key_line(p, S_FORMAT, "pipe_steps")) sc->pipe_steps = 2; /* the pipelined builds' default: make synth measures 1, 2 and 4 */
     if ((msg = fx_format_check(&sc->fmt))) {
-        const char *key = sc->fmt.frac > sc->fmt.width - 2 ? "frac" : sc->fmt.sqrt_bits > sc->fmt.width - 1 ? "sqrt_bits" : "div_bits";
+        const char *key = sc->fmt.frac > sc->fmt.width - 2 ? "frac" : sc->fmt.sqrt_bits > sc->fmt.width - 1 ? "sqrt_bits"
+                          : sc->fmt.div_bits > sc->fmt.width - 1 ? "div_bits" : "mantissa";
         if (!key_line(p, S_FORMAT, key)) key = "width"; /* a default no longer fits the width */
         return fail_at(p, blame(p, S_FORMAT, key), "%s (width = %d, frac = %d)", msg, sc->fmt.width, sc->fmt.frac);
     }
@@ -785,7 +787,7 @@ bool scene_load(scene *sc, const char *path, char *err)
     }
     sc->dim = 2;
     sc->number = NUMBER_FIXED;
-    sc->fmt = (fx_format){32, 16, 0, 0};
+    sc->fmt = (fx_format){32, 16, 0, 0, 0};
     sc->frames = 100;
     sc->substeps = 1;
     sc->iterations = 1;

@@ -3,8 +3,19 @@
 
 #include <stdio.h>
 
+/* fx_along_pipe.v (the normalised datapath, MANTISSA > 0): |d| OR-ed, the leading ones, the funnels,
+   their rounding, the squares (two stages), x, x's normalising, the ROM word, x' C0 (two stages),
+   Newton's difference, Y1, R Y1 (two stages), Qm's shift, Qm, m Qm (two stages), the shift back, t */
+long hw_along_pipe_latency(const hw_params *hp)
+{
+    (void)hp;
+    return 21;
+}
+
 long hw_toward_latency(const hw_params *hp)
 {
+    if (hp->mantissa) /* toward.v: one operation through toward_pipe, done the cycle after its result */
+        return hw_toward_pipe_latency(hp) + 1;
     if (hp->projection) /* toward_prev.v: the root of r.r, DIM unit divides, three phases of DIM products
                            (each used 3 cycles after its issue), p.p and rest^2, the leg's root, the last
                            phase, T formed, done */
@@ -29,6 +40,8 @@ long hw_div_pipe_latency(const hw_params *hp)
 
 long hw_toward_pipe_latency(const hw_params *hp)
 {
+    if (hp->mantissa) /* toward_pipe.v: d, fx_along_pipe, T, the output register */
+        return hw_along_pipe_latency(hp) + 3;
     if (hp->projection) /* toward_prev_pipe.v: q and r, r's squares and their sum, the root, the DIM unit
                            divides, q.u (products, rounding, two sums), s u and p, p.p and rest^2 (products,
                            sum, difference), the leg's root, leg u, o, T, the choice into the output registers */
@@ -167,7 +180,8 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                  hp->arch ? "5" : "4");
     if (hp->arch && hp->en_constraints)
         snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld%s\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
-                 hp->projection ? "2 LSQ + LDV + 28" : "LSQ + LDV + 11", hw_toward_pipe_latency(hp), steps);
+                 hp->projection ? "2 LSQ + LDV + 28" : hp->mantissa ? "LA + 3 (LA = fx_along_pipe's 21)" : "LSQ + LDV + 11",
+                 hw_toward_pipe_latency(hp), hp->mantissa ? "" : steps);
     return snprintf(out, (size_t)len,
                     "%s latency LT = %s = %ld\n"
                     "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
@@ -177,7 +191,8 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "substep = %s%s [+ spring pass] [+ ground %s + %s] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
-                    hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
+                    hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20"
+                    : hp->mantissa ? "toward_pipe's LA + 3, + 1 (MANTISSA > 0)" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp), hw_spring_latency(hp), pipe,
                     graph_streams(hp) ? "2 E_RODS + COLOURS (LP + 3) (pipelined graph)"
                     : hp->arch        ? "2 sweeps of SP = max(floor(K/2) + 2, LP + 4) (pipelined)"

@@ -12,6 +12,8 @@
 extern "C" {
 #endif
 
+/* fx_along_pipe.v (MANTISSA > 0, the normalised distance datapath): inputs in cycle 0, t in this cycle. */
+long hw_along_pipe_latency(const hw_params *hp);
 /* toward.v: start to done (the distance datapath of the constraints). */
 long hw_toward_latency(const hw_params *hp);
 /* fx_sqrt_pipe.v, fx_div_pipe.v (rtl/pipe_latency.vh): operands sampled at edge e give their

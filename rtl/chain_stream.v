@@ -121,7 +121,7 @@ module chain_stream #(
     localparam integer NB     = 2 * DW + 2;                    // a node's bundle: {held, pin, prev, pos}
 `include "pipe_latency.vh"
     localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS)
-                                           : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS);
+                                           : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA);
     localparam integer PJ     = (K + 1) / 2;                   // pairs read a sweep
     localparam integer NS     = K / 2 + 1;                     // slots a sweep
     localparam [0:0]   K_EVEN = K % 2 == 0;
@@ -449,13 +449,13 @@ module chain_stream #(
                 end
                 /* verilator lint_off PINCONNECTEMPTY */
                 // the centred rule's points: nothing is carried
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_U),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_U),
                             .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_up (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_up[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_up[DW +: DW]), .in_pc(node[DW +: DW]),
                     .in_rest(rest_s), .in_tag(u_tag_in),
                     .out_valid(u_valid), .out_t(u_t), .out_ok(u_ok), .out_tag(u_tag), .out_p(), .out_c());
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                             .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_down (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b0),
                     .in_p(nb_dn[0 +: DW]), .in_c(node[0 +: DW]), .in_pp(nb_dn[DW +: DW]), .in_pc(node[DW +: DW]),
@@ -516,7 +516,7 @@ module chain_stream #(
                 wire             o_valid, o_ok;
                 wire [DW-1:0]    o_t, o_p, o_c;
                 wire [TAG_W-1:0] o_tag;
-                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
+                dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                             .CARRY(1'b1), .PROJECTION(PROJECTION), .IN_REG(1'b0), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
                     .clk(clk), .reset(reset), .in_valid(valid), .in_excess(1'b1),
                     .in_p(a[0 +: DW]), .in_c(b[0 +: DW]), .in_pp(a[DW +: DW]), .in_pc(b[DW +: DW]),

@@ -9,7 +9,7 @@
  * substep's start). One operation a clock; its result LATENCY cycles later
  * (pipe_latency.vh, model/timing.c hw_toward_pipe_latency; LSQ and LDV the root's and the
  * dividers' latencies, SQRT_BITS + 2 and DIV_BITS + 2 with STEPS = 1):
- *     toward_pipe       LSQ + LDV + 11       (STEPS = 1: SQRT_BITS + DIV_BITS + 15)
+ *     toward_pipe       LSQ + LDV + 11       (STEPS = 1: SQRT_BITS + DIV_BITS + 15); 24 with MANTISSA
  *     toward_prev_pipe  2 LSQ + LDV + 28     (STEPS = 1: 2 SQRT_BITS + DIV_BITS + 34)
  * The ports are toward_prev_pipe's; without PROJECTION the previous positions (in_pp,
  * in_pc) are not used. See those two modules for the arithmetic.
@@ -19,6 +19,7 @@ module dist_pipe #(
     parameter integer F          = 16,
     parameter integer SQRT_BITS  = W - 1,
     parameter integer DIV_BITS   = W - 1,
+    parameter integer MANTISSA   = 0,     // 0: the full-width root and divide; 6 .. 20: the normalised datapath
     parameter integer STEPS      = 1,     // root and divide iterations a pipeline stage
     parameter integer DIM        = 2,
     parameter integer TAG_W      = 1,
@@ -53,7 +54,7 @@ module dist_pipe #(
                 .in_p(in_p), .in_c(in_c), .in_pp(in_pp), .in_pc(in_pc), .in_rest(in_rest), .in_tag(in_tag),
                 .out_valid(out_valid), .out_t(out_t), .out_ok(out_ok), .out_tag(out_tag), .out_p(out_p), .out_c(out_c));
         end else begin : g_current
-            toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
+            toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
                           .CARRY(CARRY), .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
                 .in_p(in_p), .in_c(in_c), .in_rest(in_rest), .in_tag(in_tag),

@@ -75,7 +75,7 @@ module graph_stream #(
     localparam integer E      = E_RODS;
 `include "pipe_latency.vh"
     localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS)
-                                           : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS);
+                                           : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA);
     localparam integer EW     = E > 1 ? $clog2(E) : 1;       // an edge index
     localparam integer ITW    = ITER > 1 ? $clog2(ITER) : 1;
     localparam integer DRW    = $clog2(LT + 3);
@@ -218,7 +218,7 @@ module graph_stream #(
     wire [DW-1:0]    o_t, o_p, o_c;
     wire [TAG_W-1:0] o_tag;
     wire [TAG_W-1:0] in_tag = {a_q, b_q, a_pin, rd_pinned};
-    dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
+    dist_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                 .CARRY(1'b1), .PROJECTION(PROJECTION), .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
         .clk(clk), .reset(reset), .in_valid(issue_q), .in_excess(1'b1),
         .in_p(a_pos), .in_c(rd_pos), .in_pp(a_prev), .in_pc(rd_prev), .in_rest(rest_q), .in_tag(in_tag),

@@ -196,7 +196,7 @@ module pair_sequencer #(
                     .p(a_pos), .c(rd_pos), .pp(a_prev), .pc(rd_prev), .rest_len(link_rest),  // b arrives as it starts
                     .busy(), .done(t_done), .t(excess), .valid(t_valid));
             end else begin : g_current
-                toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+                toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .DIM(DIM)) u_toward (
                     .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
                     .p(a_pos), .c(rd_pos), .rest_len(link_rest),  // b arrives as toward starts
                     .busy(), .done(t_done), .t(excess), .valid(t_valid));

@@ -83,7 +83,7 @@ module toward_prev_pipe #(
     localparam integer T_U     = T_L + LDV + 1;
     localparam integer T_G     = T_U + LSQ + 15;
     localparam integer LATENCY = T_G + 6;
-    localparam integer LP0     = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);  // the fallback toward_pipe's
+    localparam integer LP0     = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, 0);  // the fallback toward_pipe's
     localparam integer CW_     = CARRY ? DW : 1;
     localparam integer OUT_W   = CW_ + TAG_W + 1 + 2 * DW;   // [C], tag, excess, P, q
     // the streams time their writes by pipe_latency.vh: it must count these stages

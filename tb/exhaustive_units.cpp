@@ -40,7 +40,7 @@ constexpr int W = EXH_W;
 constexpr int L = EXH_LANES;
 constexpr uint64_t WMASK = (uint64_t(1) << W) - 1;
 
-fx_format fmt = {EXH_W, EXH_F, EXH_W - 1, EXH_W - 1};
+fx_format fmt = {EXH_W, EXH_F, EXH_W - 1, EXH_W - 1, 0};
 
 // Bit fields of Verilator ports, narrow (integers) or wide (VlWide).
 template <std::size_t N> uint64_t getf(const VlWide<N>& p, int lsb, int width)

@@ -62,12 +62,12 @@ FAULTS = {
         ("toward_pipe.v", r"^    output reg              out_ok, ", "    output wire             out_ok, "),
         ("toward_pipe.v", r"^    output reg  \[TAG_W-1:0\] out_tag,", "    output wire [TAG_W-1:0] out_tag,"),
         ("toward_pipe.v", r"^    assign out_valid = v_q\[LATENCY-1\];\n", ""),
-        ("toward_pipe.v", r"^        out_t    <= t_s3;\n        out_ok   <= !dz_s3;\n        out_tag  <= tag_s3;\n"
-                          r"        p_out    <= p_s3;\n        c_out    <= c_s3;\n",
-         "        p_out    <= p_s2;\n        c_out    <= c_s2;\n"),
+        ("toward_pipe.v", r"^        out_t   <= t_sum;\n        out_ok  <= ok_f;\n        out_tag <= tag_f;\n", ""),
+        ("toward_pipe.v", r"^            assign out_p = p_out;\n            assign out_c = c_out;\n",
+         "            assign out_p = p_f;\n            assign out_c = c_f;\n            wire unused_fault = &{1'b0, p_out, c_out};\n"),
         ("toward_pipe.v", r"^endmodule",
          "    // planted fault: the output stage bypassed\n"
-         "    assign out_valid = v_q[LATENCY-2];\n    assign out_t = t_s3;\n    assign out_ok = !dz_s3;\n    assign out_tag = tag_s3;\n\n"
+         "    assign out_valid = v_q[LATENCY-2];\n    assign out_t = t_sum;\n    assign out_ok = ok_f;\n    assign out_tag = tag_f;\n\n"
          "endmodule"),
     ],
 }
@@ -124,12 +124,20 @@ FAULTS["step_priority"] = [
      "    assign frame_start  = phase == PH_IDLE && !walk && step;\n"),
 ]
 
+# the normalised datapath (MANTISSA > 0): the normaliser's shift one bit too far for lane y, so
+# every correction with d.y != 0 points the wrong way
+FAULTS["norm_shift"] = [
+    ("fx_along_pipe.v", r"^            wire signed \[FW-1:0\] kept = ext >>> l_sh;\n",
+     "            wire signed [FW-1:0] kept = ext >>> (l_sh + {{(FB-1){1'b0}}, k == 1});  // planted fault: lane y one bit further\n"),
+]
+
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).
 ORDER = {"boundary": "redblack", "slots_cut": "redblack", "bypass": "redblack", "hazard": "redblack",
-         "graph_hazard": "redblack", "graph_boundary": "redblack", "stage_r": "redblack", "odd_pin": "redblack"}
+         "graph_hazard": "redblack", "graph_boundary": "redblack", "stage_r": "redblack", "odd_pin": "redblack",
+         "norm_shift": "redblack"}
 # The scene a fault runs on, where it is not the default chain (tb/scenes/chain_q10_8.scene).
 SCENE = {"graph_hazard": "tb/scenes/graph3d_q12.scene", "graph_boundary": "tb/scenes/graph3d_q12.scene",
-         "slots_cut": "tb/scenes/chain_slot_bound.scene"}
+         "slots_cut": "tb/scenes/chain_slot_bound.scene", "norm_shift": "tb/scenes/mantissa/chain_pair_3d_mb8.scene"}
 
 
 def plant(name, out):

@@ -13,7 +13,7 @@
 // idle gaps separate setup writes and frames.
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
-//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--png-dir DIR]
+//                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority|norm_shift] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--png-dir DIR]
 //                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
@@ -356,6 +356,11 @@ bool Run::cycle(const cyc_inputs &in) {
     }
     if (o_.expect == "bypass" && r_.predicted_fault < 0 && !in.reset && cyc_stream_write_due(&model_))
         r_.predicted_fault = cyc_;
+    // norm_shift: the normaliser shifts lane y one bit too far, so the pass's first write (a
+    // free node whose links have d.y != 0 in the scene this runs on) lands with the wrong
+    // value and shows on its write-back lane the cycle after
+    if (o_.expect == "norm_shift" && r_.predicted_fault < 0 && !in.reset && cyc_stream_write_due(&model_))
+        r_.predicted_fault = cyc_ + 1;
     // step_priority: a CMD beside a step in IDLE starts the chain's init walk instead of the
     // frame, so the RTL shows phase INIT the cycle after
     if (o_.expect == "step_priority" && r_.predicted_fault < 0 && !in.reset && in.step && in.cfg_we &&
@@ -615,7 +620,7 @@ Result Run::go(int frames) {
 static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
-                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--quiet] [--as-built]\n"
+                         "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority|norm_shift] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--quiet] [--as-built]\n"
                          "               [--order serial|redblack] [--progress]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
@@ -660,9 +665,9 @@ int main(int argc, char **argv) {
     }
     if (o.scene.empty()) return usage("no SCENE given");
     if (!o.expect.empty() && o.expect != "flip" && o.expect != "delay" && o.expect != "boundary" && o.expect != "bypass" &&
-        o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary" &&
+        o.expect != "slots_cut" && o.expect != "hazard" && o.expect != "graph_hazard" && o.expect != "graph_boundary" && o.expect != "norm_shift" &&
         o.expect != "stage_r" && o.expect != "odd_pin" && o.expect != "step_priority")
-        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary, stage_r, odd_pin or step_priority");
+        return usage("--expect-fault takes flip, delay, boundary, slots_cut, bypass, hazard, graph_hazard, graph_boundary, stage_r, odd_pin, step_priority or norm_shift");
     if (o.mode != "lockstep" && o.mode != "rtl" && o.mode != "model") return usage("--mode takes lockstep, rtl or model");
     if (!o.order.empty() && o.order != "serial" && o.order != "redblack") return usage("--order takes serial or redblack");
 

@@ -15,6 +15,11 @@
 #     reduced SQRT_BITS/DIV_BITS;
 #   - the Verilator test tb/exhaustive_units.cpp: every operand at W=12 against
 #     model/fixed.c called directly (in three parallel processes);
+#   - the Verilator test tb/along_units.cpp: rtl/fx_along_pipe.v (the normalised distance
+#     datapath) in the eight configurations of UNITS_ALONG_SLOTS side by side against
+#     model/fixed.c fx_along, every d and rest at W = 8 (2D, MB = 6) and every d at W = 8
+#     (3D, MB = 8), random and edge vectors at W = 12, 18 and 32, MB = 8 .. 20; then the same
+#     bench on a copy of the RTL with tb/faults.py's norm_shift planted, which must FAIL;
 #   - one Icarus testbench (tb/tb_toward.v, tb/tb_toward_pipe.v, tb/tb_spring_force.v) per
 #     configuration in UNITS_DP_TESTS, with vectors from tb/gen_vectors.c built with the
 #     frame engine (model/engine_fixed.c): edge cases, every radicand class modulo 8 the
@@ -157,9 +162,9 @@ else \
 fi
 endef
 
-.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors
+.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors units-along
 
-test-units: units-icarus units-verilator units-datapaths
+test-units: units-icarus units-verilator units-datapaths units-along
 
 $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 	@mkdir -p $(dir $@)
@@ -286,6 +291,41 @@ units-verilator: $(UNITS_EXH_BIN)
 	ra=0; rb=0; rc=0; wait $$pa || ra=$$?; wait $$pb || rb=$$?; wait $$pc || rc=$$?; \
 	[ $$ra -eq 0 ] && [ $$rb -eq 0 ] && [ $$rc -eq 0 ]
 
+# fx_along_pipe: eight slots SLOT:W:MB:DIM:EXHAUSTIVE, the one list of tb/along_units.v's -G
+# parameters and tb/along_units.cpp's ALONG_SLOTS (exhaustive slots are W = 8).
+UNITS_ALONG_SLOTS := 0:8:6:2:1 1:8:8:3:1 2:18:17:2:0 3:32:17:2:0 4:32:17:3:0 5:32:8:3:0 6:32:20:3:0 7:12:11:3:0
+UNITS_ALONG_N     ?= 1000000
+UNITS_ALONG_FIELD = $(word $(2),$(subst :, ,$(1)))
+UNITS_ALONG_G  := $(foreach s,$(UNITS_ALONG_SLOTS),-GW$(call UNITS_ALONG_FIELD,$(s),1)=$(call UNITS_ALONG_FIELD,$(s),2) \
+                  -GMB$(call UNITS_ALONG_FIELD,$(s),1)=$(call UNITS_ALONG_FIELD,$(s),3) -GDIM$(call UNITS_ALONG_FIELD,$(s),1)=$(call UNITS_ALONG_FIELD,$(s),4))
+UNITS_EMPTY :=
+UNITS_SPACE := $(UNITS_EMPTY) $(UNITS_EMPTY)
+UNITS_COMMA := ,
+UNITS_ALONG_D  := {$(subst $(UNITS_SPACE),$(UNITS_COMMA),$(foreach s,$(UNITS_ALONG_SLOTS),{$(subst :,$(UNITS_COMMA),$(s:$(call UNITS_ALONG_FIELD,$(s),1):%=%))}))}
+UNITS_ALONG_RTL := $(addprefix rtl/,fx_along_pipe.v fx_mul_pipe.v delay_line.v strand_ram.v)
+UNITS_ALONG_SRC := $(UNITS_ROOT)/tb/along_units.v $(UNITS_ROOT)/tb/along_units.cpp $(UNITS_ROOT)/model/fixed.c
+
+# $(1) the build's directory, $(2) the RTL directory
+define UNITS_ALONG_BUILD
+mkdir -p $(1) && $(UNITS_VERILATOR) --cc --exe --build -j 2 -Wall -I$(2) -I$(UNITS_ROOT)/rtl --top-module along_units $(UNITS_ALONG_G) \
+    -CFLAGS "-DALONG_SLOTS='$(UNITS_ALONG_D)' -I$(UNITS_ROOT)/model -O2" -MAKEFLAGS "OPT_FAST=-O2 OPT_GLOBAL=-O2 OPT_SLOW=-O0" \
+    -Mdir $(1) -o along_units $(UNITS_ALONG_SRC) $(addprefix $(2)/,$(notdir $(UNITS_ALONG_RTL))) > $(1)/build.log 2>&1 \
+    || { cat $(1)/build.log; exit 1; }
+endef
+
+$(UNITS_BUILD)/along/along_units: $(UNITS_ALONG_SRC) $(addprefix $(UNITS_ROOT)/,$(UNITS_ALONG_RTL)) $(UNITS_ROOT)/model/fixed.h $(UNITS_VH)
+	@$(call UNITS_ALONG_BUILD,$(UNITS_BUILD)/along,$(UNITS_ROOT)/rtl)
+
+# the bench, then the bench on a copy of the RTL with the normaliser's shift one bit too far for
+# lane y (tb/faults.py norm_shift), which must fail
+units-along: $(UNITS_BUILD)/along/along_units
+	@$(call UNITS_JUDGE,$(UNITS_BUILD)/along/along_units $(UNITS_ALONG_N),$(UNITS_BUILD)/along/run.log,along_units,8)
+	@python3 $(UNITS_ROOT)/tb/faults.py norm_shift $(UNITS_BUILD)/along_fault/rtl
+	@$(call UNITS_ALONG_BUILD,$(UNITS_BUILD)/along_fault,$(UNITS_BUILD)/along_fault/rtl)
+	@if $(UNITS_BUILD)/along_fault/along_units 2000 > $(UNITS_BUILD)/along_fault/run.log 2>&1; then \
+	    echo "FAIL along_planted_fault_norm_shift: the planted fault was not detected"; exit 1; \
+	else echo "PASS along_planted_fault_norm_shift: $$(grep -m1 '^FAIL' $(UNITS_BUILD)/along_fault/run.log | cut -d: -f1 | cut -c6-) caught it"; fi
+
 # Lint: every unit with default and with edge parameters, no warnings at all.
 UNITS_LINT_PARAMS_add  := "" "-GW=8"
 UNITS_LINT_PARAMS_avg  := "" "-GW=8"
@@ -308,6 +348,9 @@ lint-units:
 	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
+	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module along_units $(UNITS_ALONG_G) tb/along_units.v $(UNITS_ALONG_RTL); \
+	out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_ROOT)/rtl -o /dev/null tb/along_units.v $(UNITS_ALONG_RTL) 2>&1); \
+	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl -DSTRAND_ECP5_DSP -GW=18 --top-module fx_mul_pipe rtl/fx_mul_pipe.v tb/ecp5_mult18x18d.v; \
 	out=$$($(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_ROOT)/rtl -Ptb_fx_mul_pipe.W=18 -o /dev/null tb/tb_fx_mul_pipe.v rtl/fx_mul_pipe.v rtl/fx_round.v tb/ecp5_mult18x18d.v 2>&1); \
 	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \

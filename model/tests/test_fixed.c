@@ -19,7 +19,7 @@
 
 #include "fixed.h"
 
-static fx_format fmt_of(int w, int f, int sqrt_bits, int div_bits) { return (fx_format){w, f, sqrt_bits, div_bits}; }
+static fx_format fmt_of(int w, int f, int sqrt_bits, int div_bits) { return (fx_format){w, f, sqrt_bits, div_bits, 0}; }
 
 static int64_t sat_ref(const fx_format *fmt, long double v)
 {
@@ -151,7 +151,7 @@ static void test_div_w12_every_pair(void **state)
    |u den - num 2^(W-2)| <= den / 2, for every |num| <= den at W = 8 and 10. */
 static void exhaust_unit_div(int w)
 {
-    fx_format f = {w, w / 2, w - 1, w - 1};
+    fx_format f = {w, w / 2, w - 1, w - 1, 0};
     for (int den = 1; den <= (1 << (w - 1)) - 1; den++)
         for (int num = -den; num <= den; num++) {
             bool dz = true;
@@ -172,7 +172,7 @@ static void test_unit_div_every_pair(void **state)
    in LSB units; *miss exactly when |d| > h. Every h, dx, dy at W = 8 (full precision). */
 static void test_leg_w8(void **state)
 {
-    fx_format f = {8, 4, 7, 7};
+    fx_format f = {8, 4, 7, 7, 0};
     (void)state;
     for (int h = 0; h <= 127; h++)
         for (int dx = -128; dx <= 127; dx++)

@@ -42,7 +42,7 @@ module graph_stream_props #(
     localparam integer AW = 1 + IW;                       // UW = 1 (M = 1)
     localparam integer CW = $clog2((E > K ? E : K) + 1);
 `include "pipe_latency.vh"
-    localparam integer LT = toward_pipe_latency(1, 1, STEPS); // the stub's latency (SQRT_BITS = DIV_BITS = 1)
+    localparam integer LT = toward_pipe_latency(1, 1, STEPS, 0); // the stub's latency (SQRT_BITS = DIV_BITS = 1)
 
     wire          done, fec, wr_en;
     wire [AW-1:0] rd_addr, wr_addr;

@@ -53,7 +53,7 @@ module stream_props #(
     localparam integer PJ = (K + 1) / 2;                        // pairs read a sweep
     localparam integer SLOTS = NS;
 `include "pipe_latency.vh"
-    localparam integer LT = toward_pipe_latency(1, 1, STEPS);   // the stub's latency (SQRT_BITS = DIV_BITS = 1)
+    localparam integer LT = toward_pipe_latency(1, 1, STEPS, 0);   // the stub's latency (SQRT_BITS = DIV_BITS = 1)
     localparam integer SP = NS + 1 > LT + 4 ? NS + 1 : LT + 4;  // chain_stream's sweep period
 
     wire             done, fec, pair_re;

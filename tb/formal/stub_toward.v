@@ -12,6 +12,7 @@ module toward #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer MANTISSA  = 0,
     parameter integer DIM       = 2
 ) (
     input  wire             clk,

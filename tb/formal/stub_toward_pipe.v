@@ -11,6 +11,7 @@ module toward_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer MANTISSA  = 0,
     parameter integer STEPS     = 1,
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
@@ -34,7 +35,7 @@ module toward_pipe #(
     output wire [DIM*W-1:0] out_c
 );
 `include "pipe_latency.vh"
-    localparam integer LATENCY = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);
+    localparam integer LATENCY = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA);
     reg [LATENCY-1:0] v_q;
     reg [TAG_W-1:0]   tag_q [0:LATENCY-1];
     integer i;
