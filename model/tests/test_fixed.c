@@ -309,6 +309,143 @@ static void test_format_check(void **state)
     assert_non_null(fx_format_check(&dv));
 }
 
+/* ---- the normalised distance datapath (fx_along) ----
+ *
+ * along_ref restates fx_along's six steps (fixed.h) in long double: leading ones by frexpl,
+ * every "round" as nearbyintl of an exact scaled value (ties to even, FE_TONEAREST), the seed's
+ * integer root by sqrtl. Every value here is an integer below 2^62, exact in long double's
+ * 64-bit mantissa, so the two must agree bit for bit; a slip in a shift, a rounding or a clamp
+ * of either shows. */
+static int lead_ref(long double v) /* floor(log2 v), v >= 1 */
+{
+    int e;
+    frexpl(v, &e);
+    return e - 1;
+}
+
+static long double mant_ref(int mb, long double v, int n) /* v 2^-n rounded, kept below 2^MB */
+{
+    long double r = nearbyintl(ldexpl(v, -n)), top = ldexpl(1.0L, mb) - 1;
+    return r > top ? top : r;
+}
+
+static bool along_ref(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest_word, fx_t t[3])
+{
+    const int mb = fmt->mantissa, tb = mb / 2 + 1;
+    long double any = 0, m[3] = {0, 0, 0}, x = 0, top = ldexpl(1.0L, mb) - 1;
+    for (int k = 0; k < 3; k++) t[k] = 0;
+    for (int k = 0; k < dim; k++) any = fmaxl(any, fabsl((long double)d[k]));
+    if (any == 0) return false;
+    int l = lead_ref(any);
+    for (int k = 0; k < dim; k++) {
+        m[k] = nearbyintl(ldexpl((long double)d[k], mb - 1 - l));
+        if (m[k] > top) m[k] = top;
+        x += m[k] * m[k];
+    }
+    /* the reciprocal root of x */
+    int lx = lead_ref(x), p = lx & 1, j = lx >> 1;
+    long double xr = mant_ref(mb, x, lx - (mb - 1));
+    long double f = floorl(ldexpl(x, -(lx - tb + 1))) - ldexpl(1.0L, tb - 1); /* the T - 1 bits under x's lead */
+    long double n = ldexpl(ldexpl(1.0L, tb) + 2 * f + 1, p);
+    long double z = floorl(ldexpl(1.0L, 2 * mb + tb + 2) / n), r = floorl(sqrtl(z));
+    while (r * r > z) r--;
+    while ((r + 1) * (r + 1) <= z) r++;
+    long double y0 = floorl((r + 1) / 2), c0 = mant_ref(mb, y0 * y0 * y0, 2 * mb);
+    long double y1 = nearbyintl(ldexpl(3 * y0 * ldexpl(1.0L, mb - 1) - xr * c0 * ldexpl(1.0L, p), -mb));
+    y1 = y1 < 0 ? 0 : y1 > top ? top : y1;
+    /* rest, the ratio's mantissa, the shift back */
+    long double rest = (long double)((uint32_t)rest_word & (uint32_t)(((uint64_t)1 << fmt->width) - 1));
+    int lr = lead_ref(rest > 1 ? rest : 1), er = lr - (mb - 1);
+    long double rm = mant_ref(mb, rest, er), q = rm * y1;
+    int b = q >= ldexpl(1.0L, 2 * mb - 1);
+    long double qm = mant_ref(mb, q, mb - 1 + b);
+    int sh = j + 1 - b - er;
+    for (int k = 0; k < dim; k++) t[k] = (fx_t)sat_ref(fmt, nearbyintl(ldexpl(m[k] * qm, -sh)));
+    return true;
+}
+
+static void along_check(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest)
+{
+    fx_t got[3], want[3];
+    bool ok = fx_along(fmt, dim, d, rest, got), ok_ref = along_ref(fmt, dim, d, rest, want);
+    bool same = ok == ok_ref;
+    for (int k = 0; k < dim; k++) same = same && got[k] == want[k];
+    if (!same)
+        fail_msg("W=%d MB=%d d=(%d, %d, %d) rest=%d: (%d, %d, %d) ok %d, expected (%d, %d, %d) ok %d", fmt->width, fmt->mantissa, d[0],
+                 d[1], dim == 3 ? d[2] : 0, rest, got[0], got[1], got[2], ok, want[0], want[1], want[2], ok_ref);
+}
+
+/* Every d at W = 8 in 2D, each with a quarter of the rest words (MB = 6) or a drawn one (MB = 8);
+   in 3D every (d.x, d.y) with a seventh of the d.z and a drawn rest. (tb/along_units.cpp checks the
+   RTL against fx_along on every d and rest of W = 8.) */
+static void test_along_w8_exhaustive(void **state)
+{
+    (void)state;
+    for (int mb = 6; mb <= 8; mb += 2) {
+        fx_format fmt = {8, 4, 7, 7, mb};
+        for (int dx = -128; dx <= 127; dx++)
+            for (int dy = -128; dy <= 127; dy++) {
+                fx_t d[3] = {dx, dy, 0};
+                if (mb == 6)
+                    for (int rest = -128 + (dx + dy + 256) % 4; rest <= 127; rest += 4) along_check(&fmt, 2, d, rest);
+                else
+                    along_check(&fmt, 2, d, (fx_t)(int8_t)rnd());
+                for (int dz = -128 + (dx + dy + 384) % 7; dz <= 127; dz += 7) {
+                    fx_t d3[3] = {dx, dy, dz};
+                    along_check(&fmt, 3, d3, (fx_t)(int8_t)rnd());
+                }
+            }
+    }
+}
+
+/* Random and edge lanes (zero, one, the extremes, very different sizes) at W = 12..32 and
+   MB = 6..20, 2D and 3D. */
+static void test_along_random_and_edges(void **state)
+{
+    static const int cfg[][2] = {{32, 17}, {32, 8}, {32, 20}, {32, 6}, {18, 17}, {24, 12}, {12, 11}, {16, 20}};
+    (void)state;
+    for (size_t c = 0; c < sizeof cfg / sizeof cfg[0]; c++) {
+        fx_format fmt = {cfg[c][0], cfg[c][0] / 2, cfg[c][0] - 1, cfg[c][0] - 1, cfg[c][1]};
+        for (int i = 0; i < 50000; i++) {
+            fx_t d[3];
+            for (int k = 0; k < 3; k++) d[k] = fx_sat(&fmt, rnd_fx(&fmt)) >> (rnd() % 3 == 0 ? rnd() % fmt.width : 0);
+            along_check(&fmt, 2 + (i & 1), d, fx_sat(&fmt, rnd_fx(&fmt)));
+        }
+    }
+}
+
+/* The contract's accuracy: t is d rest / |d| (exact, long double) within 6 2^-MB rest + 1 LSB
+   (the steps' roundings; measured: at most 4.4 2^-MB rest), and the zero vector is flagged. */
+static void test_along_error_bound(void **state)
+{
+    (void)state;
+    for (int mb = 6; mb <= 20; mb++) {
+        fx_format fmt = {32, 16, 31, 31, mb};
+        for (int i = 0; i < 20000; i++) {
+            int dim = 2 + (i & 1), bits = 1 + (int)(rnd() % 30);
+            fx_t d[3] = {0, 0, 0}, t[3], rest = (fx_t)(rnd() >> (64 - 1 - (int)(rnd() % 29)));
+            long double len = 0;
+            for (int k = 0; k < dim; k++) {
+                d[k] = (fx_t)((int64_t)(rnd() >> (64 - bits)) - ((int64_t)1 << (bits - 1)));
+                len += (long double)d[k] * d[k];
+            }
+            if (!fx_along(&fmt, dim, d, rest, t)) {
+                assert_true(len == 0);
+                continue;
+            }
+            for (int k = 0; k < dim; k++) {
+                long double exact = (long double)d[k] * rest / sqrtl(len), err = fabsl(t[k] - exact);
+                if (err > 6 * ldexpl(rest, -mb) + 1)
+                    fail_msg("MB=%d d=(%d, %d, %d) rest=%d: lane %d is %d, exactly %.3Lf", mb, d[0], d[1], d[2], rest, k, t[k], exact);
+            }
+        }
+    }
+    fx_format fmt = {32, 16, 31, 31, 17};
+    fx_t zero[3] = {0, 0, 0}, t[3] = {1, 1, 1};
+    assert_false(fx_along(&fmt, 3, zero, 100, t));
+    assert_true(t[0] == 0 && t[1] == 0 && t[2] == 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -326,6 +463,9 @@ int main(void)
         cmocka_unit_test(test_format_check),
         cmocka_unit_test(test_unit_div_every_pair),
         cmocka_unit_test(test_leg_w8),
+        cmocka_unit_test(test_along_w8_exhaustive),
+        cmocka_unit_test(test_along_random_and_edges),
+        cmocka_unit_test(test_along_error_bound),
     };
     fesetround(FE_TONEAREST);
     return cmocka_run_group_tests_name("fixed-point arithmetic", tests, NULL, NULL);
