@@ -90,6 +90,7 @@ module fx_along_pipe #(
     localparam integer PRE = W + 1 - 2 * MB > 0 ? W + 1 - 2 * MB : 0;  // -min(0, 2MB-1-W)
     localparam integer EW  = 2 * MB + 2 + PRE;         // m_k Qm 2^(PRE+1): the shift back's word
     localparam integer UB  = $clog2(EW);               // its shift, 1 .. EW - 1
+    localparam integer KW  = W + 3 < EW ? W + 3 : EW;  // the bits of the shifted product that matter
     localparam [MB-1:0] TOP = {MB{1'b1}};              // the largest unsigned mantissa
 `include "pipe_latency.vh"
 `include "fx_rsqrt_seed.vh"
@@ -140,34 +141,28 @@ module fx_along_pipe #(
     // bit (bit L of the funnel) and the sticky OR of bits 0 .. L - 1 ----
     wire [FB-1:0] l_at  = {{(FB-LB){1'b0}}, l_2};     // the half bit's place
     wire [FB-1:0] lr_at = {{(FB-LB){1'b0}}, lr_2};
-    wire [FB-1:0] l_sh  = l_at + 1'b1;
-    wire [FB-1:0] lr_sh = lr_at + 1'b1;
     reg  [DIM*MW-1:0] q_3;
     reg  [DIM-1:0]    half_3, sticky_3;
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_funnel
-            wire signed [FW-1:0] ext = {d_2[k*W +: W], {MB{1'b0}}};
-            /* verilator lint_off UNUSEDSIGNAL */
-            // the funnel's top bits: the largest lane's MB + 1 bits are all there is
-            wire signed [FW-1:0] kept = ext >>> l_sh;
-            /* verilator lint_on UNUSEDSIGNAL */
+            wire [FW-1:0] ext = {d_2[k*W +: W], {MB{1'b0}}};
+            wire [MW-1:0] kept;
+            fx_shr #(.IN_W(FW - 1), .OUT_W(MW), .SB(LB), .SIGNED(1'b1)) u_funnel (.a(ext[FW-1:1]), .s(l_2), .y(kept));
             always @(posedge clk) begin
-                q_3[k*MW +: MW] <= kept[MW-1:0];
+                q_3[k*MW +: MW] <= kept;
                 half_3[k]       <= ext[l_at];
                 sticky_3[k]     <= |(ext & ~({FW{1'b1}} << l_at));
             end
         end
     endgenerate
     wire [FW-1:0] rext  = {rest_2, {MB{1'b0}}};
-    /* verilator lint_off UNUSEDSIGNAL */
-    // as the lanes' funnels: R has MB bits
-    wire [FW-1:0] rkept = rext >> lr_sh;
-    /* verilator lint_on UNUSEDSIGNAL */
+    wire [MB-1:0] rkept;
+    fx_shr #(.IN_W(FW - 1), .OUT_W(MB), .SB(LB), .SIGNED(1'b0)) u_rest_funnel (.a(rext[FW-1:1]), .s(lr_2), .y(rkept));
     reg  [MB-1:0] qr_3;
     reg           halfr_3, stickyr_3, zero_3;
     reg  [LB-1:0] lr_3;
     always @(posedge clk) begin
-        qr_3      <= rkept[MB-1:0];
+        qr_3      <= rkept;
         halfr_3   <= rext[lr_at];
         stickyr_3 <= |(rext & ~({FW{1'b1}} << lr_at));
         zero_3    <= zero_2;
@@ -317,31 +312,33 @@ module fx_along_pipe #(
     reg [2:0] zero_q;                   // the flag in cycles 18 .. 20
     always @(posedge clk) zero_q <= {zero_q[1:0], mz_17[DIM*MW]};
 
-    // ---- 20: E = P 2^(PRE+1) >> u, its half and sticky bits; 21: rounded, saturated ----
-    localparam signed [EW-1:0] TMAX = {{(EW-W+1){1'b0}}, {(W-1){1'b1}}};
-    localparam signed [EW-1:0] TMIN = {{(EW-W+1){1'b1}}, {(W-1){1'b0}}};
+    // ---- 20: E = P 2^(PRE+1) >> u, its half and sticky bits; 21: rounded, saturated. |t| <
+    // 2^(2MB-sh) <= 2^(Lr+2) <= 2^(W+1), so the shift keeps KW = W + 3 bits (the rest are sign
+    // copies) and saturation asks whether those above bit W - 1 are all the sign ----
+    wire [EW-1:0] below_mask = ~({EW{1'b1}} << (u_19 - 1'b1));   // the bits under the half bit
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_back
             wire [WM-1:0] mk = {{(WM-MW){mz_17[k*MW + MW-1]}}, mz_17[k*MW +: MW]};
             /* verilator lint_off UNUSEDSIGNAL */
-            // |m_k Qm| < 2^(2MB): the product's bits above 2MB are copies of its sign
+            // |m_k Qm| < 2^(2MB): the product's bits above 2MB are copies of its sign; of the shift,
+            // the low KW bits are the value
             wire [PW-1:0] prod_19;
             /* verilator lint_on UNUSEDSIGNAL */
             fx_mul_pipe #(.W(WM)) u_prod (.clk(clk), .a(mk), .b({{(WM-MB){1'b0}}, qm_17}), .prod(prod_19));
-            // |m_k Qm| < 2^(2MB): 2MB + 1 bits signed, then PRE + 1 zero bits
-            wire signed [EW-1:0] e     = {prod_19[2*MB:0], {(PRE+1){1'b0}}};
-            wire signed [EW-1:0] kept  = e >>> u_19;
-            wire        [EW-1:0] below = e & ~({EW{1'b1}} << (u_19 - 1'b1));
-            reg  signed [EW-1:0] kept_20;
-            reg                  half_20, sticky_20;
+            wire [EW-1:0] e = {prod_19[2*MB:0], {(PRE+1){1'b0}}};
+            wire [KW-1:0] kept;
+            fx_shr #(.IN_W(EW), .OUT_W(KW), .SB(UB), .SIGNED(1'b1)) u_back (.a(e), .s(u_19), .y(kept));
+            reg  [KW-1:0] kept_20;
+            reg           half_20, sticky_20;
             always @(posedge clk) begin
                 kept_20   <= kept;
                 half_20   <= e[u_19 - 1'b1];
-                sticky_20 <= below != {EW{1'b0}};
+                sticky_20 <= (e & below_mask) != {EW{1'b0}};
             end
-            wire signed [EW-1:0] rounded = kept_20 + {{(EW-1){1'b0}}, half_20 && (sticky_20 || kept_20[0])};
+            wire [KW-1:0] rounded = kept_20 + {{(KW-1){1'b0}}, half_20 && (sticky_20 || kept_20[0])};
+            wire          fits    = rounded[KW-1:W-1] == {(KW-W+1){rounded[KW-1]}};
             always @(posedge clk)
-                t[k*W +: W] <= rounded > TMAX ? TMAX[W-1:0] : rounded < TMIN ? TMIN[W-1:0] : rounded[W-1:0];
+                t[k*W +: W] <= fits ? rounded[W-1:0] : {rounded[KW-1], {(W-1){!rounded[KW-1]}}};
         end
     endgenerate
     always @(posedge clk) ok <= !zero_q[2];

@@ -102,6 +102,10 @@ def random_build(rng, plan=None):
     # the pipes' root and divide iterations a stage, drawn from the build itself rather than rng,
     # so that the builds drawn after this one stay what they were before PIPE_STEPS existed
     b["PIPE_STEPS"] = (plan or {}).get("PIPE_STEPS") or random.Random(repr(sorted(b.items()))).choice([1, 1, 2, 3, 4])
+    # the distance datapath: the full-width root and divide (0) or the normalised one's mantissa bits;
+    # drawn likewise from the build (projection = previous runs the full-width one only)
+    mb = random.Random("mantissa " + repr(sorted(b.items()))).choice([0, 0, 6, 8, 11, 14, 17, 17, 20])
+    b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if b["EN_CONSTRAINTS"] and not b["PROJECTION"] else 0
     return b
 
 
@@ -111,13 +115,13 @@ def random_build(rng, plan=None):
 PLAN = [
     {"name": "chain 2D pairwise serial K=1, impulse, ground -x", "GRAPH": 0, "DIM": 2, "EN_CONSTRAINTS": 1, "RULE": 1,
      "ORDER": 0, "K": 1, "M": 3, "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 1, "GROUND_AXIS": 0, "GROUND_ABOVE": 0,
-     "SQRT": "narrow", "DIV": "full", "ITER": 3, "EN_DAMPING": 1, "W": 16},
+     "SQRT": "narrow", "DIV": "full", "ITER": 3, "EN_DAMPING": 1, "W": 16, "MANTISSA": 8},
     {"name": "chain 3D pairwise pipelined, springs, grab, ground +z", "GRAPH": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "RULE": 1,
      "ORDER": 1, "M": 3, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_SPRINGS": 1, "EN_GROUND": 1, "GROUND_AXIS": 2,
-     "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow", "W": 32, "SUBSTEPS": 2, "PIPE_STEPS": 2},
+     "GROUND_ABOVE": 1, "SQRT": "full", "DIV": "narrow", "W": 32, "SUBSTEPS": 2, "PIPE_STEPS": 2, "MANTISSA": 17},
     {"name": "graph 3D rods pipelined and springs, grab, ground -y", "GRAPH": 1, "ORDER": 1, "DIM": 3, "EN_CONSTRAINTS": 1, "EN_SPRINGS": 1,
      "M": 2, "K": 3, "EN_MOUSE": 1, "GRAB": 1, "EN_GROUND": 1, "GROUND_AXIS": 1, "GROUND_ABOVE": 0, "SQRT": "full", "DIV": "full",
-     "EN_GRAVITY": 1, "W": 24, "PIPE_STEPS": 3},
+     "EN_GRAVITY": 1, "W": 24, "PIPE_STEPS": 3, "MANTISSA": 12},
     {"name": "graph 2D rods, previous projection, impulse, no gravity", "GRAPH": 1, "ORDER": 0, "DIM": 2,
      "EN_CONSTRAINTS": 1, "EN_SPRINGS": 0,
      "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 0, "SQRT": "narrow", "DIV": "narrow", "EN_GRAVITY": 0, "W": 20,
@@ -145,6 +149,9 @@ CLASSES = [
     ("previous serial", "projection = previous on the serial pass or a graph's rods"),
     ("previous pipelined", "projection = previous on a pipelined pass"),
     ("pipe steps>1", "a pipelined pass whose root and dividers take several iterations a stage (PIPE_STEPS > 1)"),
+    ("mantissa serial", "the normalised distance datapath (MANTISSA > 0) on a chain's serial pass"),
+    ("mantissa pipelined", "the normalised distance datapath on a chain's pipelined pass"),
+    ("mantissa graph", "the normalised distance datapath on a graph's rods"),
     ("graph order serial", "a graph's rods in the scene's order (the serial pass, ARCH = 0)"),
     ("graph order redblack", "a graph's rods by colour on the pipelined pass (graph_stream, ARCH = 1)"),
     ("graph colours>1", "a pipelined graph whose rods take several colours (drains between them)"),
@@ -250,6 +257,7 @@ def scene_text(build, seed, slot):
     frames = rng.randint(3, 10)
     lines = [f"; random scene, seed {seed}", "[scene]", f"name = fuzz_{seed}", f"dim = {dim}",
              "[format]", f"width = {w}", f"frac = {f}", f"sqrt_bits = {build['SQRT_BITS']}", f"div_bits = {build['DIV_BITS']}",
+             f"mantissa = {build.get('MANTISSA', 0)}",
              f"pipe_steps = {build.get('PIPE_STEPS', 1)}",
              "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['SUBSTEPS']}", f"iterations = {build['ITER']}"]
     if build["EN_DAMPING"]:
@@ -354,6 +362,8 @@ def classes_of(p, facts, resets=0):
                 c.add("graph colours>1")
             if p["ARCH"] and p["PIPE_STEPS"] > 1:
                 c.add("pipe steps>1")
+            if p["MANTISSA"]:
+                c.add("mantissa graph")
         c.add("graph springs" if p["EN_SPRINGS"] else "graph rods only" if rods else "no constraints")
     else:
         c.add("K=1" if p["K"] == 1 else "")
@@ -361,6 +371,8 @@ def classes_of(p, facts, resets=0):
         if rods:
             c.add(["chain centred", "chain pairwise"][p["RULE"]])
             c.add("chain pipelined" if p["ARCH"] else "chain serial")
+            if p["MANTISSA"]:
+                c.add("mantissa pipelined" if p["ARCH"] else "mantissa serial")
             if p["ARCH"] and p["PIPE_STEPS"] > 1:
                 c.add("pipe steps>1")
             if p["ARCH"] and p["K"] == 1:
@@ -380,7 +392,7 @@ def classes_of(p, facts, resets=0):
     if p["EN_DAMPING"]:
         c.add("damping")
     c.add(("grab" if p["GRAB"] else "impulse") if p["EN_MOUSE"] else "no mouse")
-    if rods or p["EN_SPRINGS"]:
+    if (rods and not p["MANTISSA"]) or p["EN_SPRINGS"]:   # the root and the divider in use
         c.add("sqrt full" if p["SQRT_BITS"] == p["W"] - 1 else "sqrt narrow")
         c.add("div full" if p["DIV_BITS"] == p["W"] - 1 else "div narrow")
     if p["W"] == 32:

@@ -127,8 +127,8 @@ FAULTS["step_priority"] = [
 # the normalised datapath (MANTISSA > 0): the normaliser's shift one bit too far for lane y, so
 # every correction with d.y != 0 points the wrong way
 FAULTS["norm_shift"] = [
-    ("fx_along_pipe.v", r"^            wire signed \[FW-1:0\] kept = ext >>> l_sh;\n",
-     "            wire signed [FW-1:0] kept = ext >>> (l_sh + {{(FB-1){1'b0}}, k == 1});  // planted fault: lane y one bit further\n"),
+    ("fx_along_pipe.v", r"\.a\(ext\[FW-1:1\]\), \.s\(l_2\), \.y\(kept\)\);",
+     ".a(ext[FW-1:1]), .s(l_2 + {{(LB-1){1'b0}}, k == 1}), .y(kept));  // planted fault: lane y one bit further"),
 ]
 
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).

@@ -302,7 +302,7 @@ UNITS_EMPTY :=
 UNITS_SPACE := $(UNITS_EMPTY) $(UNITS_EMPTY)
 UNITS_COMMA := ,
 UNITS_ALONG_D  := {$(subst $(UNITS_SPACE),$(UNITS_COMMA),$(foreach s,$(UNITS_ALONG_SLOTS),{$(subst :,$(UNITS_COMMA),$(s:$(call UNITS_ALONG_FIELD,$(s),1):%=%))}))}
-UNITS_ALONG_RTL := $(addprefix rtl/,fx_along_pipe.v fx_mul_pipe.v delay_line.v strand_ram.v)
+UNITS_ALONG_RTL := $(addprefix rtl/,fx_along_pipe.v fx_shr.v fx_mul_pipe.v delay_line.v strand_ram.v)
 UNITS_ALONG_SRC := $(UNITS_ROOT)/tb/along_units.v $(UNITS_ROOT)/tb/along_units.cpp $(UNITS_ROOT)/model/fixed.c
 
 # $(1) the build's directory, $(2) the RTL directory
