@@ -104,6 +104,15 @@ BUILDS = [
     ("q10_12x256_pair_pipe", {"W": 18, "F": 8, "SQRT_BITS": 17, "DIV_BITS": 17, "M": 12, "K": 256, "ARCH": 1, "RULE": 1},
      "ecp5p"),
     ("cloth_pipe", {"M": 1, "K": 256, "GRAPH": 1, "RULE": 1, "ARCH": 1, "E_RODS": 480, "COLOURS": 4}, "ecp5p"),
+    # the normalised distance datapath (MANTISSA = 17: every product one MULT18X18D) with Q16.16
+    # positions: one unit of each rule (placed: a unit's cells and clock), the 1024-node rope of the
+    # centred rule (4 units: packed and placed) and the largest that pack (5 centred units; 6 and 7
+    # of the pairwise rule, one pipe a unit)
+    ("m17_1x256_pipe", {"MANTISSA": 17, "M": 1, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("m17_1x256_pair_pipe", {"MANTISSA": 17, "M": 1, "K": 256, "ARCH": 1, "RULE": 1}, "ecp5p"),
+    ("m17_4x256_pipe", {"MANTISSA": 17, "M": 4, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("m17_5x256_pipe", {"MANTISSA": 17, "M": 5, "K": 256, "ARCH": 1}, "ecp5p"),
+    ("m17_7x256_pair_pipe", {"MANTISSA": 17, "M": 7, "K": 256, "ARCH": 1, "RULE": 1}, "ecp5p"),
 ]
 BUILD_MAP = {n: (o, p) for n, o, p in BUILDS}
 MAIN = [n for n, o, p in BUILDS if p == "ecp5"]      # the three builds every table shows
@@ -111,23 +120,22 @@ UP5K = [n for n, o, p in BUILDS if p == "ice40"]
 PIPE = [n for n, o, p in BUILDS if p == "ecp5p"]
 # Seeds of the pipelined builds' place and route: three for the largest placed builds (the
 # Q10.8 4x256 and 6x256), whose median is the clock the CPU comparison uses (one seed's fmax
-# moves by several MHz with nothing changed); one for the others (a run of the WebAssembly nextpnr-ecp5
-# on the 4x5 pipelined build takes an hour or more, its router congested by eight pipes in a
-# small body; the 1x256 about 7 minutes; the 4x256 some hours, most of it placing a design that
-# fills three quarters of the device). The 4x5, the 1x256, 2x256 and 4x256 and the cloth
-# go through synth_ecp5 and nextpnr; the 8x128_pair through synth_ecp5 and nextpnr's packing (below); the
-# 8x8 and the 16x16 (more multipliers than the device has) get generic cells only, and the
-# report gives the multipliers they would need.
-PIPE_SEEDS = {"4x5_pipe": [1], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe_s1": [1], "1x256_pipe_s4": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [1], "8x128_pair_pipe": [],
+# moves by several MHz with nothing changed); one for the others (the 1x256 takes about 7
+# minutes). The Q16.16 full-width 4x5 and 4x256 are no longer placed: the WebAssembly
+# nextpnr-ecp5 never finished them here (the record's last runs: the 4x5 stopped at its
+# two-hour budget while routing, 16,715 of 236,221 arcs left; the 4x256 after 50 minutes, still
+# placing), so the 4x5 gets generic cells and the 4x256 its packing. The 1x256, 2x256, the
+# cloth and the MANTISSA = 17 builds go through synth_ecp5 and nextpnr; the 8x128_pair through
+# synth_ecp5 and nextpnr's packing (below); the 8x8 and the 16x16 (more multipliers than the
+# device has) get generic cells only, and the report gives the multipliers they would need.
+PIPE_SEEDS = {"4x5_pipe": [], "1x256_pipe": [1], "2x256_pipe": [1], "1x256_pipe_s1": [1], "1x256_pipe_s4": [1], "8x8_pipe": [], "16x16_pipe": [], "4x256_pipe": [], "8x128_pair_pipe": [],
               "cloth_pipe": [1], "q10_1x256_pipe": [1], "q10_4x256_pipe": [1, 2, 3],
               "q10_6x256_pipe": [1, 2, 3],
-              "q10_8x256_pipe": [], "q10_12x256_pair_pipe": []}
+              "q10_8x256_pipe": [], "q10_12x256_pair_pipe": [],
+              "m17_1x256_pipe": [1], "m17_1x256_pair_pipe": [1], "m17_4x256_pipe": [1], "m17_5x256_pipe": [],
+              "m17_7x256_pair_pipe": []}
 # Builds routed by nextpnr's router2 instead of its default router1 (a device filled to three
-# quarters). The 4x5 is back on router1: router2 stalled on it twice, at about 19,000 overused
-# wires after ten iterations, with 128 and with 96 multiplier blocks; router1 routed an earlier
-# version of it in 41 minutes, had 157,000 of 227,000 arcs left after an hour on another, and
-# 111,000 of 236,000 after an hour (27 minutes of it placing) on the three-block multiplier's:
-# its budget is two hours.
+# quarters; none is placed now).
 # The Q10.8 8x256 fills 86 to 87 % of the TRELLIS_COMB and is packed, not placed: router1 had
 # 52,600 of 281,000 arcs left, and not falling, when its 70-minute budget stopped it, and router2's
 # overused wires grew from its sixth iteration to its tenth (26,000 to 28,600) in 20 minutes here.
@@ -151,12 +159,13 @@ for _b in TIMING_WEIGHTED:
 # budget is reported as not finished, with how far it got. That result is kept in the record like
 # any other (the budget is part of its key): to try again, on a faster machine or with a native
 # nextpnr-ecp5, raise the budget here.
-PNR_BUDGET.update({"4x5_pipe": 7200, "4x256_pipe": 5400, "q10_8x256_pipe": 4200})
+PNR_BUDGET.update({"4x256_pipe": 5400, "q10_8x256_pipe": 4200, "m17_4x256_pipe": 5400})
 # Pipelined builds packed (nextpnr-ecp5 --pack-only: the device's cells they take, measured):
 # whether the 1024-node ropes fit, in a minute. The 8x128_pair is not placed in make synth
 # (`synth.py pnr BUILD` places one alone once its seed is listed above; make synth then takes
 # its figures from the record).
-PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe", "q10_8x256_pipe", "q10_12x256_pair_pipe"]
+PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe", "q10_8x256_pipe", "q10_12x256_pair_pipe", "m17_4x256_pipe", "m17_5x256_pipe",
+             "m17_7x256_pair_pipe"]
 # The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
 # where the cells of a unit of the largest build go.
 HIER_BUILD = "4x256_pipe"
