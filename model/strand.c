@@ -216,6 +216,9 @@ static bool load(const char *path, scene *sc, int order)
 static const char *format_name(number_kind kind, const fx_format *fmt, char *buf, size_t len)
 {
     if (kind == NUMBER_DOUBLE) snprintf(buf, len, "double");
+    else if (fmt->mantissa)
+        snprintf(buf, len, "Q%d.%d (W=%d, constraints on %d-bit mantissas; sqrt %d bits, div %d bits)", fmt->width - fmt->frac,
+                 fmt->frac, fmt->width, fmt->mantissa, fmt->sqrt_bits, fmt->div_bits);
     else snprintf(buf, len, "Q%d.%d (W=%d, sqrt %d bits, div %d bits)", fmt->width - fmt->frac, fmt->frac, fmt->width, fmt->sqrt_bits, fmt->div_bits);
     return buf;
 }

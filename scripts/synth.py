@@ -168,7 +168,7 @@ PIPE_PACK = ["4x256_pipe", "8x128_pair_pipe", "q10_8x256_pipe", "q10_12x256_pair
              "m17_7x256_pair_pipe"]
 # The pipelined build whose ECP5 cells are also counted module by module (synth_ecp5 -noflatten):
 # where the cells of a unit of the largest build go.
-HIER_BUILD = "4x256_pipe"
+HIER_BUILDS = ["4x256_pipe", "m17_1x256_pipe"]   # the full-width datapath's unit, and the normalised one's
 # Seeds of the other builds (one, so that the whole flow ends within the hour or two of the
 # pipelined build's place and route). The 16x16 is not placed on the ECP5: nextpnr-ecp5's
 # router was still resolving some 124,000 overused wires after 25 minutes of routing here.
@@ -196,7 +196,7 @@ def flows_of(build):
         return ["ice40", "ice40_place"]
     if placed == "ecp5p":  # a pipelined build: its cells, and the ECP5 if it is placed or packed
         return ["generic"] + (["ecp5", "ecp5_place"] if seeds_of(build) or build in PIPE_PACK else []) \
-            + (["ecp5_hier"] if build == HIER_BUILD else [])
+            + (["ecp5_hier"] if build in HIER_BUILDS else [])
     return CORE_FLOWS + ["ecp5_place", "ice40_place"]
 
 
@@ -374,6 +374,36 @@ def gather(bdir, gen, srcs):
                 packs[b]["fits"] = False  # a packing recorded before pnr_outcome judged capacity
             missing += [] if ok else [f"{b} nextpnr-ecp5 packing"]
     return res, pnr, packs, missing
+
+
+def hierarchy_section(w, build, hier):
+    """Where a pipelined unit's cells go: the module tree of one build's ecp5_hier flow."""
+    w(f"## Where a pipelined unit's cells go ({build}, ECP5)")
+    w("")
+    if hier is None:
+        w(f"{NOT_RUN} for this RTL.")
+        w("")
+        return
+    rows = hierarchy_rows(hier["mods"], hier["top"])
+    kinds = [("LUT4", "LUT4"), ("CCU2C", "CCU2C (carry)"), ("TRELLIS_FF", "FF"), ("MULT18X18D", "MULT18X18D"),
+             ("DP16KD", "DP16KD"), ("TRELLIS_DPR16X4", "DPR16X4")]
+    comb = lambda t: t.get("LUT4", 0) + 2 * t.get("CCU2C", 0)
+    whole = comb(rows[0]["subtree_types"])
+    w(f"`synth_ecp5 -noflatten` of strand_core as {build} (the core, without the shell; flattened, as "
+      "placed, synthesis merges a little across module borders, so the sums differ slightly from the ECP5 "
+      "table above). Each row is one instance of a module with everything under it; *logic* is LUT4 + 2 CCU2C "
+      "(a carry cell takes two of a slice's LUTs), its share of the whole core's.")
+    w("")
+    w("| module | instances (per parent) | " + " | ".join(h for _, h in kinds) + " | logic, share |")
+    w("|---|--:|" + "--:|" * len(kinds) + "--:|")
+    for r in rows:
+        n = r["instances"]
+        t = r["subtree_types"]
+        name = "&nbsp;&nbsp;" * (2 * r["depth"]) + r["name"]
+        w(f"| {name} | {fmt(n)} ({fmt(r['per_parent'])}) | "
+          + " | ".join(fmt(round(t.get(k, 0) / n)) for k, _ in kinds)
+          + f" | {fmt(round(comb(t) / n))}, {pct(comb(t), whole)} |")
+    w("")
 
 
 def report(bdir, gen, out, srcs):
@@ -709,33 +739,8 @@ def report(bdir, gen, out, srcs):
         w("Generic cells per node: " + ", ".join(f"{b} {fmt(t // n)}" for b, n, t in per_node) + ".")
         w("")
 
-    hier = res[HIER_BUILD].get("ecp5_hier")
-    w(f"## Where a pipelined unit's cells go ({HIER_BUILD}, ECP5)")
-    w("")
-    if hier is None:
-        w(f"{NOT_RUN} for this RTL.")
-        w("")
-    else:
-        rows = hierarchy_rows(hier["mods"], hier["top"])
-        kinds = [("LUT4", "LUT4"), ("CCU2C", "CCU2C (carry)"), ("TRELLIS_FF", "FF"), ("MULT18X18D", "MULT18X18D"),
-                 ("DP16KD", "DP16KD"), ("TRELLIS_DPR16X4", "DPR16X4")]
-        comb = lambda t: t.get("LUT4", 0) + 2 * t.get("CCU2C", 0)
-        whole = comb(rows[0]["subtree_types"])
-        w(f"`synth_ecp5 -noflatten` of strand_core as {HIER_BUILD} (the core, without the shell; flattened, as "
-          "placed, synthesis merges a little across module borders, so the sums differ slightly from the ECP5 "
-          "table above). Each row is one instance of a module with everything under it; *logic* is LUT4 + 2 CCU2C "
-          "(a carry cell takes two of a slice's LUTs), its share of the whole core's.")
-        w("")
-        w("| module | instances (per parent) | " + " | ".join(h for _, h in kinds) + " | logic, share |")
-        w("|---|--:|" + "--:|" * len(kinds) + "--:|")
-        for r in rows:
-            n = r["instances"]
-            t = r["subtree_types"]
-            name = "&nbsp;&nbsp;" * (2 * r["depth"]) + r["name"]
-            w(f"| {name} | {fmt(n)} ({fmt(r['per_parent'])}) | "
-              + " | ".join(fmt(round(t.get(k, 0) / n)) for k, _ in kinds)
-              + f" | {fmt(round(comb(t) / n))}, {pct(comb(t), whole)} |")
-        w("")
+    for hb in HIER_BUILDS:
+        hierarchy_section(w, hb, res[hb].get("ecp5_hier"))
 
     w("## How to regenerate")
     w("")
