@@ -212,7 +212,7 @@ uint32_t fx_norm_rest(int mb, uint32_t rest, int *er)
 fx_t fx_denorm(const fx_format *fmt, int64_t prod, int sh)
 {
     if (sh > 0) return fx_sat(fmt, fx_round_shift(prod, sh));
-    /* a left shift: |prod| < 2^(2MB+1) and sh >= 2MB-1-W, so the result stays below 2^62 */
+    /* a left shift: |prod| <= 2^(W-1+MB) and sh >= MB-W, so the result stays below 2^(2W-1) <= 2^63 */
     return fx_sat(fmt, prod * (INT64_C(1) << -sh));
 }
 
@@ -222,15 +222,15 @@ bool fx_along(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest, fx_t t[
     int64_t m[3];
     uint64_t x = 0, q;
     uint32_t y1, r, qm;
-    int j, er, b;
+    int j, er, b, sn;
     for (int k = 0; k < 3; k++) t[k] = 0;
-    if (fx_norm_lanes(mb, dim, d, m) == INT32_MIN) return false;
+    if ((sn = fx_norm_lanes(mb, dim, d, m)) == INT32_MIN) return false;
     for (int k = 0; k < dim; k++) x += (uint64_t)(m[k] * m[k]);
     y1 = fx_rsqrt_norm(mb, x, &j);
     r = fx_norm_rest(mb, (uint32_t)rest & (uint32_t)(((uint64_t)1 << fmt->width) - 1), &er); /* the W-bit word, unsigned */
     q = (uint64_t)r * y1;
     b = q >> (2 * mb - 1) ? 1 : 0;
     qm = (uint32_t)mant_unsigned(mb, q, mb - 1 + b);
-    for (int k = 0; k < dim; k++) t[k] = fx_denorm(fmt, m[k] * (int64_t)qm, j + 1 - b - er);
+    for (int k = 0; k < dim; k++) t[k] = fx_denorm(fmt, (int64_t)d[k] * qm, j + 1 - b - er + sn);
     return true;
 }

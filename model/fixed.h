@@ -178,9 +178,12 @@ fx_t fx_unit_div(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero);
  *     rest 2^-er rounded and clamped (MB bits; 0 for rest = 0).
  *  5. the ratio's mantissa: Q = R Y1 (exact, < 2^(2MB)), b = Q >= 2^(2MB-1),
  *     Qm = Q 2^-(MB-1+b) rounded and clamped (MB bits).
- *  6. back into the format (fx_denorm): t_k = m_k Qm 2^-sh rounded (sh > 0) or shifted left
- *     (sh <= 0), saturated, with sh = J + 1 - b - er, in [2MB-1-W, 2MB].
- * s cancels: t = m rest / |m|. Error: a few 2^-MB of |t| (docs/model.md has the bound).
+ *  6. back into the format (fx_denorm): t_k = d_k Qm 2^-(sh+s) rounded (sh + s > 0) or shifted
+ *     left, saturated, with sh = J + 1 - b - er: sh + s is in [MB-W, W+MB]. The product takes d
+ *     itself, not m_k: t keeps d's direction exactly and only its length, rest / |d|, comes from
+ *     mantissas (t = d Qm 2^-(sh+s) = d rest / |d|). Rounded m_k would put the target on a grid
+ *     of rest 2^-MB across the link: coarser, for a long link, than a slow swing's step.
+ * Error: a few 2^-MB of rest, along d (docs/model.md has the bound).
  */
 int fx_msb(uint64_t v); /* floor(log2 v), v > 0 */
 /* Step 1: m[0..dim-1] from d; returns the shift s, or INT32_MIN (with m = 0) when d = 0. */
@@ -192,7 +195,7 @@ void fx_rsqrt_seed(int mb, int idx, uint32_t *y0, uint32_t *c0);
 uint32_t fx_rsqrt_norm(int mb, uint64_t x, int *j);
 /* Step 4: R for rest >= 0 (unsigned Q.F); *er = er. */
 uint32_t fx_norm_rest(int mb, uint32_t rest, int *er);
-/* Step 6 for one lane: the product P = m_k Qm, its shift sh. */
+/* Step 6 for one lane: the product P = d_k Qm, its shift sh + s. */
 fx_t fx_denorm(const fx_format *fmt, int64_t prod, int sh);
 /* Steps 1-6. */
 bool fx_along(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest, fx_t t[3]);

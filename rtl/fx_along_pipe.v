@@ -87,8 +87,9 @@ module fx_along_pipe #(
     localparam integer FW  = W + MB;                   // a funnel: {word, MB zero bits}
     localparam integer FB  = $clog2(FW);               // a bit index into a funnel
     localparam integer XW  = 2 * MB + 2;               // x = sum m_k^2 < 2^(2MB+2)
-    localparam integer PRE = W + 1 - 2 * MB > 0 ? W + 1 - 2 * MB : 0;  // -min(0, 2MB-1-W)
-    localparam integer EW  = 2 * MB + 2 + PRE;         // m_k Qm 2^(PRE+1): the shift back's word
+    localparam integer PW2 = W + MB;                   // d_k Qm, signed: |d_k| <= 2^(W-1), Qm < 2^MB
+    localparam integer PRE = W > MB ? W - MB : 0;      // -min(0, sh + s): sh + s >= MB - W
+    localparam integer EW  = PW2 + PRE + 1;            // d_k Qm 2^(PRE+1): the shift back's word
     localparam integer UB  = $clog2(EW);               // its shift, 1 .. EW - 1
     localparam integer KW  = W + 3 < EW ? W + 3 : EW;  // the bits of the shifted product that matter
     localparam [MB-1:0] TOP = {MB{1'b1}};              // the largest unsigned mantissa
@@ -96,8 +97,8 @@ module fx_along_pipe #(
 `include "fx_rsqrt_seed.vh"
     `STRAND_CHECK(fx_along_pipe_latency_formula, LATENCY == along_pipe_latency(MB),
                   ("fx_along_pipe: its stages (%0d) and pipe_latency.vh (%0d) disagree in %m", LATENCY, along_pipe_latency(MB)))
-    localparam integer U0_I = 2 * MB + PRE;
-    localparam [UB-1:0] U0 = U0_I[UB-1:0];             // u = U0 + J - (MB - 1) - b - Lr
+    localparam integer U0_I = MB + PRE + 1;
+    localparam [UB-1:0] U0 = U0_I[UB-1:0];             // u = sh + s + PRE + 1 = U0 + J - (MB - 1) - b - Lr + L
 
     genvar k;
 
@@ -159,21 +160,20 @@ module fx_along_pipe #(
     wire [MB-1:0] rkept;
     fx_shr #(.IN_W(FW - 1), .OUT_W(MB), .SB(LB), .SIGNED(1'b0)) u_rest_funnel (.a(rext[FW-1:1]), .s(lr_2), .y(rkept));
     reg  [MB-1:0] qr_3;
-    reg           halfr_3, stickyr_3, zero_3;
+    reg           halfr_3, stickyr_3;
     reg  [LB-1:0] lr_3;
     always @(posedge clk) begin
         qr_3      <= rkept;
         halfr_3   <= rext[lr_at];
         stickyr_3 <= |(rext & ~({FW{1'b1}} << lr_at));
-        zero_3    <= zero_2;
         lr_3      <= lr_2;
+        l_3       <= l_2;
     end
 
     // ---- 4: rounded (ties to even) and clamped: m_k's positive side and R below 2^MB ----
     reg [DIM*MW-1:0] m_4;
     reg [MB-1:0]     r_4;
-    reg              zero_4;
-    reg [LB-1:0]     lr_4;
+    reg [LB-1:0]     lr_4, l_3, l_4;
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_round
             wire [MW-1:0] q  = q_3[k*MW +: MW];
@@ -183,8 +183,8 @@ module fx_along_pipe #(
     endgenerate
     always @(posedge clk) begin
         r_4    <= qr_3 + {{(MB-1){1'b0}}, halfr_3 && (stickyr_3 || qr_3[0]) && qr_3 != TOP};
-        zero_4 <= zero_3;
         lr_4   <= lr_3;
+        l_4    <= l_3;
     end
 
     // ---- 5, 6: the squares; 7: x ----
@@ -270,14 +270,14 @@ module fx_along_pipe #(
     always @(posedge clk)
         y1_13 <= n_rnd < 0 ? {MB{1'b0}} : n_rnd > $signed({{(XW-MB){1'b0}}, TOP}) ? TOP : n_rnd[MB-1:0];
 
-    // ---- R and Lr wait for Y1 (cycles 4 .. 13, Lr to 15); 14, 15: Q = R Y1 ----
-    wire [MB+LB-1:0] rl_13;
-    delay_line #(.WIDTH(MB + LB), .DELAY(9), .BLOCK_MIN(BLOCK_MIN)) u_r_ring (
-        .clk(clk), .reset(reset), .in({lr_4, r_4}), .out(rl_13));
-    reg  [LB-1:0] lr_14, lr_15;
+    // ---- R, Lr and L wait for Y1 (cycles 4 .. 13, Lr and L to 15); 14, 15: Q = R Y1 ----
+    wire [MB+2*LB-1:0] rl_13;
+    delay_line #(.WIDTH(MB + 2 * LB), .DELAY(9), .BLOCK_MIN(BLOCK_MIN)) u_r_ring (
+        .clk(clk), .reset(reset), .in({l_4, lr_4, r_4}), .out(rl_13));
+    reg  [LB-1:0] lr_14, lr_15, l_14, l_15;
     always @(posedge clk) begin
-        lr_14 <= rl_13[MB +: LB];
-        lr_15 <= lr_14;
+        {l_14, lr_14} <= rl_13[MB +: 2 * LB];
+        {l_15, lr_15} <= {l_14, lr_14};
     end
     wire [PW-1:0] q_15;
     fx_mul_pipe #(.W(WM)) u_ratio (.clk(clk), .a({{(WM-MB){1'b0}}, rl_13[MB-1:0]}), .b({{(WM-MB){1'b0}}, y1_13}), .prod(q_15));
@@ -295,7 +295,8 @@ module fx_along_pipe #(
         qt_16      <= qkept;
         qhalf_16   <= qhalf;
         qsticky_16 <= qbelow;
-        u_16       <= U0 + {{(UB-1){1'b0}}, jh_15} - {{(UB-1){1'b0}}, qb} - {{(UB-LB){1'b0}}, lr_15};
+        u_16       <= U0 + {{(UB-1){1'b0}}, jh_15} - {{(UB-1){1'b0}}, qb} - {{(UB-LB){1'b0}}, lr_15}
+                      + {{(UB-LB){1'b0}}, l_15};
     end
     reg [MB-1:0] qm_17;
     always @(posedge clk) begin
@@ -305,27 +306,33 @@ module fx_along_pipe #(
         u_19  <= u_18;
     end
 
-    // ---- m_k and the zero flag wait (cycles 4 .. 17, the flag to 21); 18, 19: m_k Qm ----
-    wire [DIM*MW:0] mz_17;
-    delay_line #(.WIDTH(DIM * MW + 1), .DELAY(13), .BLOCK_MIN(BLOCK_MIN)) u_m_ring (
-        .clk(clk), .reset(reset), .in({zero_4, m_4}), .out(mz_17));
+    // ---- d and the zero flag wait (cycles 2 .. 17, the flag to 21); 18, 19: d_k Qm. The product
+    // takes d itself, not its rounded mantissa m_k, so that t keeps d's direction exactly: only
+    // its length, rest / |d|, is computed on mantissas (a rounded m_k would put every target on a
+    // grid of rest 2^-MB across the link, coarser than a slow swing's step) ----
+    wire [DIM*W:0] dz_17;
+    delay_line #(.WIDTH(DIM * W + 1), .DELAY(15), .BLOCK_MIN(BLOCK_MIN)) u_d_ring (
+        .clk(clk), .reset(reset), .in({zero_2, d_2}), .out(dz_17));
     reg [2:0] zero_q;                   // the flag in cycles 18 .. 20
-    always @(posedge clk) zero_q <= {zero_q[1:0], mz_17[DIM*MW]};
+    always @(posedge clk) zero_q <= {zero_q[1:0], dz_17[DIM*W]};
 
-    // ---- 20: E = P 2^(PRE+1) >> u, its half and sticky bits; 21: rounded, saturated. |t| <
-    // 2^(2MB-sh) <= 2^(Lr+2) <= 2^(W+1), so the shift keeps KW = W + 3 bits (the rest are sign
-    // copies) and saturation asks whether those above bit W - 1 are all the sign ----
+    // ---- 20: E = d_k Qm 2^(PRE+1) >> u, its half and sticky bits; 21: rounded, saturated.
+    // |t| < 2^(2MB-sh) <= 2^(Lr+2) <= 2^(W+1) (|d_k| 2^-s < 2^MB), so the shift keeps KW = W + 3 bits
+    // (the rest are sign copies) and saturation asks whether those above bit W - 1 are all the sign ----
     wire [EW-1:0] below_mask = ~({EW{1'b1}} << (u_19 - 1'b1));   // the bits under the half bit
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_back
-            wire [WM-1:0] mk = {{(WM-MW){mz_17[k*MW + MW-1]}}, mz_17[k*MW +: MW]};
-            /* verilator lint_off UNUSEDSIGNAL */
-            // |m_k Qm| < 2^(2MB): the product's bits above 2MB are copies of its sign; of the shift,
-            // the low KW bits are the value
-            wire [PW-1:0] prod_19;
-            /* verilator lint_on UNUSEDSIGNAL */
-            fx_mul_pipe #(.W(WM)) u_prod (.clk(clk), .a(mk), .b({{(WM-MB){1'b0}}, qm_17}), .prod(prod_19));
-            wire [EW-1:0] e = {prod_19[2*MB:0], {(PRE+1){1'b0}}};
+            // the product in two stages: operands registered, then the product (W x (MB + 1) bits
+            // signed: one multiplier block up to W = 17, two at W = 32)
+            reg  signed [W-1:0]   da_18;
+            reg         [MB-1:0]  qa_18;
+            reg  signed [PW2-1:0] prod_19;
+            always @(posedge clk) begin
+                da_18   <= dz_17[k*W +: W];
+                qa_18   <= qm_17;
+                prod_19 <= da_18 * $signed({1'b0, qa_18});
+            end
+            wire [EW-1:0] e = {prod_19, {(PRE+1){1'b0}}};
             wire [KW-1:0] kept;
             fx_shr #(.IN_W(EW), .OUT_W(KW), .SB(UB), .SIGNED(1'b1)) u_back (.a(e), .s(u_19), .y(kept));
             reg  [KW-1:0] kept_20;

@@ -55,7 +55,15 @@ SCENES = {
     "swing": ("sim/scenes/swing_rope.scene", "none"),
     "hanging": ("sim/scenes/hanging_rope.scene", "none"),
     "ref002": ("sim/scenes/ref002_verlet.scene", "none"),
+    "rope_rest": ("tb/bench/rope_rest.scene", "none"),
 }
+# The normalised datapath's mantissa bits (the scene's `mantissa`; 0, the full-width root and divide,
+# is the reference): the catenary, the hanging rope, the pendulum's period, the undamped pendulum's
+# energy and the 1024-node rope at rest (64 substeps x 16 iterations: make bench's accurate row) at
+# Q16.16, and the cells of a one-unit pipelined core (the centred rule, 256 nodes) at each
+MANTISSAS = [6, 8, 10, 12, 14, 16, 17, 18, 20]
+MANT_ROPE = dict(substeps=64, iterations=16)
+MANT_BUILD = "m17_1x256_pipe"   # make synth's build whose cells and clock the table extends to every MB
 # projection = previous against current on bodies of many links, at their cycles per frame:
 # (scene, the points' fixed settings, substeps, iterations)
 PROJECTION_GRID = [
@@ -86,7 +94,7 @@ def fmt_name(w, f):
 
 
 def point(scene, w=32, f=16, sqrt_bits=None, div_bits=None, substeps=None, iterations=None, rule=None, frames=None,
-          order=None, projection=None, reverse=False, damping=None):
+          order=None, projection=None, reverse=False, damping=None, mantissa=None):
     path, check = SCENES[scene]
     p = dict(scene=scene, path=path, check=check, width=w, frac=f, sqrt_bits=sqrt_bits or w - 1,
              div_bits=div_bits or w - 1, substeps=substeps, iterations=iterations, rule=rule, frames=frames,
@@ -97,6 +105,8 @@ def point(scene, w=32, f=16, sqrt_bits=None, div_bits=None, substeps=None, itera
         p["reverse"] = True
     if damping is not None:  # the scene's Verlet damping replaced
         p["damping"] = damping
+    if mantissa:  # the normalised datapath; only when set, so that the other points keep their cache keys
+        p["mantissa"] = mantissa
     return p
 
 
@@ -151,7 +161,21 @@ def study_points():
         for i in POW2:
             pts.append(point("catenary", substeps=BASE["substeps"], iterations=i, rule=rule, order="redblack"))
     pts.append(point("hanging", order="redblack"))
+    # 7. the normalised datapath: every MB against the full width (mantissa 0: the points above)
+    pts += mantissa_points()
     return dedup(pts)
+
+
+def mantissa_points(mbs=None):
+    """The points of the mantissa table, for MB in mbs (default MANTISSAS and 0, the full width)."""
+    pts = []
+    for mb in ([0] + MANTISSAS) if mbs is None else mbs:
+        pts.append(point("catenary", mantissa=mb, **BASE))
+        pts.append(point("hanging", mantissa=mb))
+        pts.append(point("pendulum", mantissa=mb))
+        pts.append(point("energy", mantissa=mb))
+        pts.append(point("rope_rest", mantissa=mb, **MANT_ROPE))
+    return pts
 
 
 def dedup(pts):
@@ -182,6 +206,8 @@ def derive(p):
         want["constraints"]["projection"] = p["projection"]
     if p.get("damping") is not None:
         want["time"]["damping"] = p["damping"]
+    if p.get("mantissa"):
+        want["format"]["mantissa"] = p["mantissa"]
     lines = open(os.path.join(ROOT, p["path"])).read().splitlines()
     out, section, done = [], None, set()
 
@@ -252,6 +278,8 @@ def label(p):
         s += f" projection={p['projection']}"
     if p.get("damping") is not None:
         s += f" damping={p['damping']}"
+    if p.get("mantissa"):
+        s += f" mantissa={p['mantissa']}"
     return s
 
 
@@ -403,11 +431,44 @@ def synth_one(w, f, s, d, flow):
     return r
 
 
+def synth_mantissa(mb, flow="ecp5"):
+    """The cells of make synth's one-unit normalised build (MANT_BUILD) with MANTISSA = mb (0: the
+    full-width datapath, make synth's 1x256_pipe); cached like synth_one, and the same script make
+    synth runs, so MB = 17 and 0 give docs/resources.md's figures."""
+    gen = os.path.join(ROOT, BUILD, "gen")
+    srcs = [os.path.join(ROOT, x) for x in RTL_SRC]
+    prm = [(n, v) for n, v in synth.params(MANT_BUILD) if n != "MANTISSA"] + ([("MANTISSA", mb)] if mb else [])
+    title = f"{MANT_BUILD} with MANTISSA={mb}"
+    text = flow_synth.yosys_script(flow, prm, gen, srcs, title)
+    key = digest(text, file_digest(srcs + gen_files(gen)))[:20]
+    path = os.path.join(ROOT, CACHE, "synth_" + key + ".json")
+    if os.path.exists(path):
+        with open(path) as fh:
+            r = json.load(fh)
+        r["cached"] = True
+        return r
+    d_ = os.path.join(ROOT, ADIR, "synth", key)
+    t0 = time.time()
+    r = dict(mantissa=mb, flow=flow)
+    try:
+        flow_synth.yosys(d_, flow, prm, srcs, title, gen=gen)
+    except Failure as e:
+        r["error"] = str(e)
+        return r
+    r["seconds"] = round(time.time() - t0, 1)
+    r["by_type"] = flow_synth.cells(d_, flow)
+    with open(path, "w") as fh:
+        json.dump(r, fh)
+    r["cached"] = False
+    return r
+
+
 def synth_all(jobs):
     tasks = [(w, f, s, d, fl) for (w, f, s, d, flows) in SYNTH_POINTS for fl in flows]
     out = []
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
-        futs = [ex.submit(synth_one, *t) for t in tasks]
+        futs = [ex.submit(synth_one, *t) for t in tasks] + [ex.submit(synth_mantissa, mb) for mb in [0] + MANTISSAS]
+        tasks += [None] * (len(MANTISSAS) + 1)
         for k, fu in enumerate(concurrent.futures.as_completed(futs)):
             r = fu.result()
             out.append(r)
@@ -818,7 +879,115 @@ def order_section(A, results, claims):
     claims["order"] = rows
 
 
+def mant_rows(results, msynth):
+    """The mantissa table's rows: MB (0 first), its points' results and its 1x256 core's cells."""
+    by_mb = {s["mantissa"]: s for s in msynth if "by_type" in s}
+    rows = []
+    for mb in [0] + MANTISSAS:
+        kw = dict(mantissa=mb) if mb else {}
+        r = dict(mb=mb, cat=one(results, "catenary", **BASE, **kw), hang=one(results, "hanging", **kw),
+                 pend=one(results, "pendulum", **kw), energy=one(results, "energy", **kw),
+                 rope=one(results, "rope_rest", **MANT_ROPE, **kw), cells=(by_mb.get(mb) or {}).get("by_type"))
+        if not all(r[k] and valid(r[k]) for k in ("cat", "hang", "pend", "energy", "rope")):
+            continue
+        rows.append(r)
+    return rows
+
+
+def mant_matches(r, full):
+    """Every error of row r within twice the full-width row's (the SQRT_BITS/DIV_BITS knees' rule)."""
+    pairs = [(cat_err(r["cat"]), cat_err(full["cat"])), (r["cat"]["err_rms"], full["cat"]["err_rms"]),
+             (get(r["hang"], "stretch_final_fx"), get(full["hang"], "stretch_final_fx")),
+             (get(r["rope"], "stretch_final_fx"), get(full["rope"], "stretch_final_fx"))]
+    return all(a is not None and b is not None and abs(a) <= 2 * abs(b) for a, b in pairs)
+
+
+def mantissa_section(A, results, msynth, claims):
+    """The normalised datapath's mantissa: error, cells and the device's bound, MB by MB."""
+    rows = mant_rows(results, msynth)
+    A("## The normalised datapath: mantissa bits")
+    A("")
+    A("With `[format] mantissa = MB` the distance constraints are computed on MB-bit mantissas that share one "
+      "exponent (docs/model.md), the positions staying in their Q16.16 format; `mantissa = 0` is the full-width "
+      "root and divide. Each row runs the same points at Q16.16 with that MB: the catenary at "
+      f"{BASE['substeps']} substeps x {BASE['iterations']} iterations (centred, serial order; error against the "
+      "analytic shape, % of span, and RMS distance from the double run, units), the hanging rope (pairwise, its "
+      "own settings; stretch at the last frame), the small pendulum's period against 2 pi sqrt(L/g), the undamped "
+      "pendulum's energy drift over its 10^5 frames, and the 1024-node rope at rest of make bench "
+      f"(tb/bench/rope_rest.scene, {MANT_ROPE['substeps']} substeps x {MANT_ROPE['iterations']} iterations, "
+      "red/black: its largest stretch over the run and at the last frame; the goal is 0.05 %). The cells are "
+      f"Yosys's `synth_ecp5` of make synth's {MANT_BUILD} (one pipelined unit of 256 nodes, the centred rule: two "
+      "distance pipes) with that MB, the same script make synth runs; *logic* is LUT4 + 2 CCU2C (a carry cell "
+      "takes two of a slice's LUTs). *Units that fit* divides the ECP5-85F's 83,640 logic slots, 156 MULT18X18D "
+      "and 208 DP16KD by this core's (which also holds the frame control and the registers a larger build shares, "
+      "so it is a bound from below); the last column multiplies them by the rope's own updates a clock a unit "
+      "(its cycles per frame from model/timing.c) and by the clock make synth placed that build at, where it did.")
+    A("")
+    if not rows:
+        A("No point of the table has a result: run make accuracy.")
+        A("")
+        return
+    full = rows[0]
+    fm = {0: synth_fmax("1x256_pipe"), 17: synth_fmax(MANT_BUILD)}
+    A("| MB | catenary: error | catenary: RMS vs double | hanging rope: stretch | pendulum: period error "
+      "| energy drift | 1024-node rope: largest / final stretch | logic (LUT4 + 2 CCU2C) | MULT18X18D | DP16KD "
+      "| units that fit | updates/s at fmax (device bound) |")
+    A("|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
+    out = []
+    for r in rows:
+        c = r["cells"] or {}
+        logic = c.get("LUT4", 0) + 2 * c.get("CCU2C", 0) if c else None
+        mult, bram = c.get("MULT18X18D", 0), c.get("DP16KD", 0)
+        fit = None
+        if logic:
+            fit = int(min(83640 / logic, 156 / mult if mult else math.inf, 208 / bram if bram else math.inf))
+        rope = r["rope"]
+        per_unit = 1024 * MANT_ROPE["substeps"] * MANT_ROPE["iterations"] / rope["cycles"] / 4  # 4 units of 256
+        mhz = fm.get(r["mb"])
+        rate = f"{fit * per_unit * mhz / 1e3:.2f} G ({fit} x {per_unit:.3f} x {mhz:.1f} MHz)" if fit and mhz else \
+            ("not placed" if fit else "-")
+        name = "full width" if r["mb"] == 0 else str(r["mb"])
+        A(f"| {name} | {g(cat_err(r['cat']))} % | {g(r['cat']['err_rms'])} | {g(get(r['hang'], 'stretch_final_fx'))} % "
+          f"| {g(get(r['pend'], 'check_fx.error_pct'))} % | {g(get(r['energy'], 'check_fx.error_pct'))} % "
+          f"| {g(get(rope, 'stretch_max_fx'))} / {g(get(rope, 'stretch_final_fx'))} % "
+          f"| {fmt_int(logic)} | {fmt_int(mult if c else None)} | {fmt_int(bram if c else None)} | {fmt_int(fit)} | {rate} |")
+        out.append(dict(mb=r["mb"], catenary=cat_err(r["cat"]), rms=r["cat"]["err_rms"],
+                        hanging=get(r["hang"], "stretch_final_fx"), rope_final=get(rope, "stretch_final_fx"),
+                        rope_max=get(rope, "stretch_max_fx"), logic=logic, units=fit))
+    A("")
+    knee = None
+    for r in sorted(rows[1:], key=lambda x: x["mb"], reverse=True):
+        if not mant_matches(r, full):
+            break
+        knee = r["mb"]
+    if knee is not None:
+        A(f"**From MB = {knee} up, every error of the table is within twice the full-width datapath's** (the rule the "
+          "SQRT_BITS and DIV_BITS knees above use); below it at least one is not.")
+    else:
+        A("**No MB of the table keeps every error within twice the full-width datapath's.**")
+    A("")
+    claims["mantissa_knee"] = knee
+    claims["mantissa"] = out
+
+
+def synth_fmax(build):
+    """make synth's median ECP5-85F fmax of a placed build for this RTL, or None (the record, as make bench reads it)."""
+    try:
+        _, pnr, _, _ = synth.gather(os.path.join(ROOT, BUILD, "synth"), os.path.join(ROOT, BUILD, "gen"),
+                                    synth.rtl_sources())
+    except (OSError, ValueError, KeyError):
+        return None
+    runs = (pnr.get(build) or {}).get("ecp5")
+    return synth.fmax_cells(runs)[1] if runs else None
+
+
+def fmt_int(v):
+    return "-" if v is None else f"{v:,}"
+
+
 def write_doc(out, img, results, synth, rtl, seconds, jobs):
+    msynth = [s for s in synth if "mantissa" in s]   # the mantissa table's builds
+    synth = [s for s in synth if "mantissa" not in s]
     cat_all = [r for r in find(results, "catenary") if valid(r) and cat_err(r) is not None]
     front_c = pareto(cat_all, lambda r: r["cycles"], cat_err)
     front_r = pareto(cat_all, lambda r: r["cycles"], lambda r: r["err_rms"])
@@ -829,7 +998,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     bound = [t for t in TARGETS if t[0] == "catenary"][0][2]
     recs = recommend(front_items, bound)
     files = plots(results, synth, img, cat_all, front_c, front_r, recs)
-    claims = dict(targets=[], recommended={}, small_steps=[], sqrt_knee=None, div_knee=None)
+    claims = dict(targets=[], recommended={}, small_steps=[], sqrt_knee=None, div_knee=None, mantissa_knee=None)
     L = []
     A = L.append
     n_pts = len(results)
@@ -1243,6 +1412,7 @@ def write_doc(out, img, results, synth, rtl, seconds, jobs):
     A(f"| {label(en['point'])} (10^5 frames) | {g(en['us_per_frame_fx'])} | {g(en['us_per_frame_dbl'])} |")
     A("")
     order_section(A, results, claims)
+    mantissa_section(A, results, msynth, claims)
     A("## How to regenerate")
     A("")
     A("`make accuracy` (scripts/accuracy.mk) builds `build/sweep` from model/sweep.c, runs scripts/accuracy.py, and "

@@ -124,11 +124,11 @@ FAULTS["step_priority"] = [
      "    assign frame_start  = phase == PH_IDLE && !walk && step;\n"),
 ]
 
-# the normalised datapath (MANTISSA > 0): the normaliser's shift one bit too far for lane y, so
-# every correction with d.y != 0 points the wrong way
+# the normalised datapath (MANTISSA > 0): the normaliser's shift one bit too far for lane x, so
+# |d| (and with it the ratio rest / |d|) comes out wrong wherever d.x is not small
 FAULTS["norm_shift"] = [
     ("fx_along_pipe.v", r"\.a\(ext\[FW-1:1\]\), \.s\(l_2\), \.y\(kept\)\);",
-     ".a(ext[FW-1:1]), .s(l_2 + {{(LB-1){1'b0}}, k == 1}), .y(kept));  // planted fault: lane y one bit further"),
+     ".a(ext[FW-1:1]), .s(l_2 + {{(LB-1){1'b0}}, k == 0}), .y(kept));  // planted fault: lane x one bit further"),
 ]
 
 # The scene order a fault's build needs (the pipelined faults live in ARCH = 1 builds).

@@ -356,9 +356,10 @@ bool Run::cycle(const cyc_inputs &in) {
     }
     if (o_.expect == "bypass" && r_.predicted_fault < 0 && !in.reset && cyc_stream_write_due(&model_))
         r_.predicted_fault = cyc_;
-    // norm_shift: the normaliser shifts lane y one bit too far, so the pass's first write (a
-    // free node whose links have d.y != 0 in the scene this runs on) lands with the wrong
-    // value and shows on its write-back lane the cycle after
+    // norm_shift: the normaliser shifts lane x one bit too far, so the length of every link
+    // with a large d.x comes out wrong: the pass's first write (in the scene this runs on, a
+    // free node whose link lies mostly along x) lands with the wrong value and shows on its
+    // write-back lane the cycle after
     if (o_.expect == "norm_shift" && r_.predicted_fault < 0 && !in.reset && cyc_stream_write_due(&model_))
         r_.predicted_fault = cyc_ + 1;
     // step_priority: a CMD beside a step in IDLE starts the chain's init walk instead of the

@@ -19,7 +19,7 @@
 #     datapath) in the eight configurations of UNITS_ALONG_SLOTS side by side against
 #     model/fixed.c fx_along, every d and rest at W = 8 (2D, MB = 6) and every d at W = 8
 #     (3D, MB = 8), random and edge vectors at W = 12, 18 and 32, MB = 8 .. 20; then the same
-#     bench on a copy of the RTL with tb/faults.py's norm_shift planted, which must FAIL;
+#     bench on a copy of the RTL with tb/faults.py's norm_shift planted (lane x), which must FAIL;
 #   - one Icarus testbench (tb/tb_toward.v, tb/tb_toward_pipe.v, tb/tb_spring_force.v) per
 #     configuration in UNITS_DP_TESTS, with vectors from tb/gen_vectors.c built with the
 #     frame engine (model/engine_fixed.c): edge cases, every radicand class modulo 8 the
@@ -317,7 +317,7 @@ $(UNITS_BUILD)/along/along_units: $(UNITS_ALONG_SRC) $(addprefix $(UNITS_ROOT)/,
 	@$(call UNITS_ALONG_BUILD,$(UNITS_BUILD)/along,$(UNITS_ROOT)/rtl)
 
 # the bench, then the bench on a copy of the RTL with the normaliser's shift one bit too far for
-# lane y (tb/faults.py norm_shift), which must fail
+# lane x (tb/faults.py norm_shift), which must fail
 units-along: $(UNITS_BUILD)/along/along_units
 	@$(call UNITS_JUDGE,$(UNITS_BUILD)/along/along_units $(UNITS_ALONG_N),$(UNITS_BUILD)/along/run.log,along_units,8)
 	@python3 $(UNITS_ROOT)/tb/faults.py norm_shift $(UNITS_BUILD)/along_fault/rtl

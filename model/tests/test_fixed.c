@@ -359,8 +359,8 @@ static bool along_ref(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest_
     long double rm = mant_ref(mb, rest, er), q = rm * y1;
     int b = q >= ldexpl(1.0L, 2 * mb - 1);
     long double qm = mant_ref(mb, q, mb - 1 + b);
-    int sh = j + 1 - b - er;
-    for (int k = 0; k < dim; k++) t[k] = (fx_t)sat_ref(fmt, nearbyintl(ldexpl(m[k] * qm, -sh)));
+    int sh = j + 1 - b - er + (l - (mb - 1));
+    for (int k = 0; k < dim; k++) t[k] = (fx_t)sat_ref(fmt, nearbyintl(ldexpl((long double)d[k] * qm, -sh)));
     return true;
 }
 
