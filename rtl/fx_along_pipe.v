@@ -34,17 +34,18 @@
  *     2^MB / sqrt(v) within about 1.5 2^-(2T+2) + 2^-MB relative.
  *   4 the ratio's mantissa: Q = R Y1, b = Q's bit 2MB - 1, Qm = Q 2^-(MB-1+b) rounded,
  *     clamped.
- *   5 back into the format: t_k = m_k Qm 2^-sh with sh = J + 1 - b - (Lr - MB + 1), rounded
- *     and saturated to W bits; the shift's range [2MB-1-W, 2MB] is made all right shifts of
- *     at least one bit by a constant left shift of PRE + 1 first.
- * The normalising shift cancels (t = m rest / |m|). Error: about 4.3 2^-MB of rest at
- * worst (test_fixed.c measures it); docs/model.md gives the terms.
+ *   5 back into the format: t_k = d_k Qm 2^-(sh+s) with sh = J + 1 - b - (Lr - MB + 1) and
+ *     s = L - MB + 1, rounded and saturated to W bits; the shift's range [MB-W, W+MB] is made
+ *     all right shifts of at least one bit by a constant left shift of PRE + 1 first.
+ * The product takes d, not m_k: Qm 2^-(sh+s) is rest / |d|, so t keeps d's direction exactly
+ * and only its length comes from the mantissas (rounded m_k would put every target on a grid of
+ * about rest 2^-MB across the link). Error: a few 2^-MB of rest, along d (test_fixed.c holds the
+ * model to 6 2^-MB rest + 1 LSB); docs/model.md gives the terms.
  *
  * Why a reciprocal root: the device's multipliers and block RAM do the work the root's and
- * the divider's adder rows did. At MB = 17 on the ECP5 (Yosys synth_ecp5), fx_sqrt_pipe and
- * fx_div_pipe at 18 bits take about 1,170 LUT4 slots and 1,560 flip-flops a pipe; the table
- * and Newton step take one DP16KD and two MULT18X18D (docs/architecture.md has the
- * measured comparison).
+ * the divider's adder rows did: the table is one DP16KD at MB = 17 and the Newton step one
+ * multiplier, the table holding the seed's cube (docs/resources.md has the cells of a unit of
+ * each datapath, docs/accuracy.md of every MB).
  *
  * Stages (a value "in cycle n" is held by a register written at the end of cycle n - 1;
  * d and rest are on the inputs in cycle 0):
@@ -53,11 +54,11 @@
  *   5, 6 the squares (fx_mul_pipe)   7 x     8 c: x' before rounding, the ROM index
  *   9 the ROM word (Y0, C0), x' rounded      10, 11 x' C0
  *   12 Newton's difference           13 Y1   14, 15 Q = R Y1
- *   16 Qm before rounding, the shift 17 Qm   18, 19 m_k Qm
+ *   16 Qm before rounding, the shift 17 Qm   18, 19 d_k Qm
  *   20 the shift back                21 t rounded, saturated, and ok
  * LATENCY = 21 (model/timing.c hw_along_pipe_latency, pipe_latency.vh): an operation on
- * the inputs in cycle 0 has t and ok in cycle 21. Throughput one operation a clock. m_k
- * and R wait for the ratio in delay_line rings. No reset: the caller's valid bits say
+ * the inputs in cycle 0 has t and ok in cycle 21. Throughput one operation a clock. d and R
+ * wait for the ratio in delay_line rings. No reset: the caller's valid bits say
  * what the outputs mean.
  */
 module fx_along_pipe #(
