@@ -48,7 +48,7 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: test-units-jobs help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
+.PHONY: test-units-jobs help bootstrap model cpu-rope cpu-fast run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
         lockstep-soak mutate gatesim test-gatesim \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
@@ -74,6 +74,7 @@ help:
 	@echo "  make bench       the core's physics throughput (both architectures) against one CPU core, and the"
 	@echo "                   harness's simulated cycles per second -> docs/performance.md (fmax from make synth)"
 	@echo "  make cpu-rope    build $(BUILD)/cpu_rope: a chain scene's frames in plain C, float or double, timed"
+	@echo "  make cpu-fast    build $(BUILD)/cpu_fast: the same, vectorised for this machine (red/black chains)"
 	@echo "  make bitstream [BOARD=icebreaker|ulx3s] [BOARD_SCENE=...]  a bitstream (rtl/boards/); then strand board --port DEV SCENE"
 	@echo "  make fusesoc     strand.core through FuseSoC/edalize: lint (Verilator), sim (Icarus frame bench), synth (Yosys, ECP5)"
 	@echo "  make demo [SCENE=...] [FMAX=MHz]  the RTL live in an SDL2 window, your mouse on its inputs, in lockstep with the C model"
@@ -132,6 +133,16 @@ $(CPU_ROPE): model/cpu_rope.c $(MODEL_LIB)
 	$(CC) $(CSTD) $(WARN) $(CPU_ROPE_OPT) -Imodel -I$(GEN) $(DEP_CFLAGS) -DCPU_ROPE_CFLAGS='"$(CC) $(CPU_ROPE_OPT)"' \
 	  $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
 cpu-rope: $(CPU_ROPE)
+
+# The optimised CPU baseline: the same physics (red/black order, chains) as structure of arrays
+# that the compiler vectorises for this machine; ISO C keeps FMA contraction off, so its double
+# frames stay the frame engine's bit for bit.
+CPU_FAST      := $(BUILD)/cpu_fast
+CPU_FAST_OPT  := -O3 -march=native -fno-math-errno
+$(CPU_FAST): model/cpu_fast.c model/cpu_fast_body.inc $(MODEL_LIB)
+	$(CC) $(CSTD) -pedantic $(WARN) $(CPU_FAST_OPT) -Imodel -I$(GEN) $(DEP_CFLAGS) \
+	  -DCPU_FAST_CFLAGS='"$(CC) $(CSTD) $(CPU_FAST_OPT)"' $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
+cpu-fast: $(CPU_FAST)
 
 run: bootstrap
 	@$(MAKE) --no-print-directory -s model
