@@ -325,11 +325,24 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 	$(CC) $(MODEL_CFLAGS) -D_POSIX_C_SOURCE=200809L -DSTRAND_ROOT='"$(CURDIR)"' -DSTRAND_BIN='"$(CURDIR)/$(STRAND)"' \
 	  $< $(MODEL_LIB) $(DEP_LIBS) -lcmocka -lm -o $@
 
-test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE)
+test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
 	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit (chains and a graph)
 	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
+	@# so does the optimised one, in the red/black order: each chain with the centred and the pairwise rule
+	@# (written under $(BUILD)/cpu_fast_scenes/), 2D and 3D, pins, zero lengths, every frame of the scene
+	@mkdir -p $(BUILD)/cpu_fast_scenes
+	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/rope_rest.scene sim/scenes/hard_long_rope.scene sim/scenes/catenary.scene \
+	          sim/scenes/hard_coincident.scene tb/scenes/pair_q12_12.scene model/tests/cpu_fast_chain3d.scene; do \
+	  for r in centred pairwise; do v=$(BUILD)/cpu_fast_scenes/$$(basename $$s .scene)_$$r.scene; \
+	    sed "s/^rule = .*/rule = $$r/" $$s > $$v && grep -q "^rule = $$r$$" $$v && $(CPU_FAST) $$v --order redblack --check || exit 1; done; done
+	@# and it refuses what it does not run, naming the scene's line: exit status 2
+	@for s in tb/bench/bench_4x5.scene tb/bench/graph_cloth.scene tb/bench/springs_4x5.scene sim/scenes/hard_ground_impact.scene \
+	          sim/scenes/hard_mouse_grab.scene tb/scenes/previous/rope_centred.scene sim/scenes/ref002_euler.scene; do \
+	  msg=$$($(CPU_FAST) $$s --check 2>&1); rc=$$?; \
+	  if [ $$rc -eq 2 ] && echo "$$msg" | grep -q "^$$s:[0-9]*: cpu_fast runs chains"; then echo "PASS cpu_fast refuses $$s: $${msg##*; not }"; \
+	  else echo "FAIL cpu_fast $$s: exit status $$rc, not 2 with a message naming the scene's line: $$msg"; exit 1; fi; done
 
 # Every shipped scene runs in both formats.
 test-scenes: $(STRAND)
