@@ -224,13 +224,13 @@ movie: bootstrap
 
 # Simulation speed of the 4x5, 8x8 and 16x16 builds: lockstep, RTL alone, model alone.
 bench: bootstrap
-	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(GEN_HDRS)
+	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(CPU_FAST) $(GEN_HDRS)
 	@python3 scripts/bench.py docs/performance.md
 
 # docs/performance.md again from the last make bench's measurements (build/bench/measured.json)
 # and make synth's results as they are now (an fmax placed after that run); nothing is measured
 bench-report: bootstrap
-	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(GEN_HDRS)
+	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(CPU_FAST) $(GEN_HDRS)
 	@python3 scripts/bench.py --reuse docs/performance.md
 
 # Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).
