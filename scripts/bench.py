@@ -451,6 +451,9 @@ FUSED_NOTE = ", and the 4 cycles by which the first sweep, which takes the Verle
 
 def main():
     args = sys.argv[1:]
+    if "-h" in args or "--help" in args:  # (else the name would be taken for OUT and the whole bench run)
+        print(__doc__.strip() + "\n\nusage: bench.py [--reuse] [OUT]   (OUT: docs/performance.md; make bench, make bench-report)")
+        return
     if "--reuse" in args:
         args.remove("--reuse")
         try:
