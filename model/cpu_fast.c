@@ -55,19 +55,25 @@
 #define FAST_LOOP
 #endif
 
-/* A link with a pinned end, which the vectorised pass takes as free and then redoes. */
+/* A link with a pinned end, worked out apart from the vectorised pass. */
 typedef struct {
     int a, b; /* nodes, a = b - 1 */
     bool a_pinned, b_pinned;
 } fast_link;
 
-/* The chain as the engines share it: sizes, layout, pins (the same for every number type). */
+/*
+ * The chain as the engines share it (the same for every number type): the layout, slots
+ * 0 .. even - 1 for the even nodes and odd .. odd + n - even - 1 for the odd ones, with at
+ * least one slot of padding after each run for the centred rule's ghosts (cpu_fast_body.inc:
+ * slot odd - 1 stands before node 0, slot even after an odd last node, slot odd + n - even
+ * after an even last node); and the pins.
+ */
 typedef struct {
     const scene *sc;
     const sim_dbl *ref; /* the frame engine's initial state and constants (init has scaled them to the substep) */
     int n;              /* nodes */
-    int even;           /* even nodes: slots 0 .. even - 1 */
-    int odd;            /* the first odd node's slot (n - even odd nodes follow it) */
+    int even;           /* even nodes */
+    int odd;            /* the first odd node's slot */
     int slots;          /* slots of an array, padding included */
     int n_pins, *pins;  /* pinned nodes */
     int n_pin_links[2]; /* per colour of links: the links with a pinned end */
@@ -168,8 +174,8 @@ static const char *shape_chain(fast_shape *sh, const scene *sc, const sim_dbl *r
     sh->ref = ref;
     sh->n = n;
     sh->even = (n + 1) / 2;
-    sh->odd = (sh->even + per_line - 1) / per_line * per_line;
-    sh->slots = sh->odd + (n / 2 + per_line - 1) / per_line * per_line; /* a multiple of FAST_ALIGN bytes */
+    sh->odd = (sh->even + 1 + per_line - 1) / per_line * per_line;        /* a ghost's slot after the even run */
+    sh->slots = (sh->odd + n / 2 + 1 + per_line - 1) / per_line * per_line; /* and after the odd run */
     sh->pins = calloc((size_t)n, sizeof *sh->pins);
     for (int c = 0; c < 2; c++) sh->pin_links[c] = calloc((size_t)n, sizeof *sh->pin_links[c]);
     if (!sh->pins || !sh->pin_links[0] || !sh->pin_links[1]) return "out of memory";
