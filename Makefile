@@ -331,10 +331,11 @@ test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
 	@# so does the optimised one, in the red/black order: each chain with the centred and the pairwise rule
-	@# (written under $(BUILD)/cpu_fast_scenes/), 2D and 3D, pins, zero lengths, every frame of the scene
+	@# (written under $(BUILD)/cpu_fast_scenes/), 2D and 3D, pins at the ends or not, zero lengths, every frame of the scene
 	@mkdir -p $(BUILD)/cpu_fast_scenes
 	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/rope_rest.scene sim/scenes/hard_long_rope.scene sim/scenes/catenary.scene \
-	          sim/scenes/hard_coincident.scene tb/scenes/pair_q12_12.scene model/tests/cpu_fast_chain3d.scene; do \
+	          sim/scenes/hard_coincident.scene sim/scenes/hard_mouse_impulse.scene tb/scenes/pair_q12_12.scene \
+	          model/tests/cpu_fast_chain3d.scene model/tests/cpu_fast_coincident.scene; do \
 	  for r in centred pairwise; do v=$(BUILD)/cpu_fast_scenes/$$(basename $$s .scene)_$$r.scene; \
 	    sed "s/^rule = .*/rule = $$r/" $$s > $$v && grep -q "^rule = $$r$$" $$v && $(CPU_FAST) $$v --order redblack --check || exit 1; done; done
 	@# and it refuses what it does not run, naming the scene's line: exit status 2
