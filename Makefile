@@ -48,7 +48,7 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: test-units-jobs help bootstrap model cpu-rope run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
+.PHONY: test-units-jobs help bootstrap model cpu-rope cpu-fast run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
         lockstep-soak mutate gatesim test-gatesim \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
@@ -74,6 +74,7 @@ help:
 	@echo "  make bench       the core's physics throughput (both architectures) against one CPU core, and the"
 	@echo "                   harness's simulated cycles per second -> docs/performance.md (fmax from make synth)"
 	@echo "  make cpu-rope    build $(BUILD)/cpu_rope: a chain scene's frames in plain C, float or double, timed"
+	@echo "  make cpu-fast    build $(BUILD)/cpu_fast: the same, vectorised for this machine (red/black chains)"
 	@echo "  make bitstream [BOARD=icebreaker|ulx3s] [BOARD_SCENE=...]  a bitstream (rtl/boards/); then strand board --port DEV SCENE"
 	@echo "  make fusesoc     strand.core through FuseSoC/edalize: lint (Verilator), sim (Icarus frame bench), synth (Yosys, ECP5)"
 	@echo "  make demo [SCENE=...] [FMAX=MHz]  the RTL live in an SDL2 window, your mouse on its inputs, in lockstep with the C model"
@@ -132,6 +133,16 @@ $(CPU_ROPE): model/cpu_rope.c $(MODEL_LIB)
 	$(CC) $(CSTD) $(WARN) $(CPU_ROPE_OPT) -Imodel -I$(GEN) $(DEP_CFLAGS) -DCPU_ROPE_CFLAGS='"$(CC) $(CPU_ROPE_OPT)"' \
 	  $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
 cpu-rope: $(CPU_ROPE)
+
+# The optimised CPU baseline: the same physics (red/black order, chains) as structure of arrays
+# that the compiler vectorises for this machine; ISO C keeps FMA contraction off, so its double
+# frames stay the frame engine's bit for bit.
+CPU_FAST      := $(BUILD)/cpu_fast
+CPU_FAST_OPT  := -O3 -march=native -fno-math-errno
+$(CPU_FAST): model/cpu_fast.c model/cpu_fast_body.inc $(MODEL_LIB)
+	$(CC) $(CSTD) -pedantic $(WARN) $(CPU_FAST_OPT) -Imodel -I$(GEN) $(DEP_CFLAGS) \
+	  -DCPU_FAST_CFLAGS='"$(CC) $(CSTD) $(CPU_FAST_OPT)"' $< $(MODEL_LIB) $(DEP_LIBS) -lm -o $@
+cpu-fast: $(CPU_FAST)
 
 run: bootstrap
 	@$(MAKE) --no-print-directory -s model
@@ -213,13 +224,13 @@ movie: bootstrap
 
 # Simulation speed of the 4x5, 8x8 and 16x16 builds: lockstep, RTL alone, model alone.
 bench: bootstrap
-	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(GEN_HDRS)
+	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(CPU_FAST) $(GEN_HDRS)
 	@python3 scripts/bench.py docs/performance.md
 
 # docs/performance.md again from the last make bench's measurements (build/bench/measured.json)
 # and make synth's results as they are now (an fmax placed after that run); nothing is measured
 bench-report: bootstrap
-	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(GEN_HDRS)
+	@$(MAKE) --no-print-directory -s model $(CPU_ROPE) $(CPU_FAST) $(GEN_HDRS)
 	@python3 scripts/bench.py --reuse docs/performance.md
 
 # Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).
@@ -314,11 +325,25 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 	$(CC) $(MODEL_CFLAGS) -D_POSIX_C_SOURCE=200809L -DSTRAND_ROOT='"$(CURDIR)"' -DSTRAND_BIN='"$(CURDIR)/$(STRAND)"' \
 	  $< $(MODEL_LIB) $(DEP_LIBS) -lcmocka -lm -o $@
 
-test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE)
+test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
 	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit (chains and a graph)
 	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
+	@# so does the optimised one, in the red/black order: each chain with the centred and the pairwise rule
+	@# (written under $(BUILD)/cpu_fast_scenes/), 2D and 3D, pins at the ends or not, zero lengths, every frame of the scene
+	@mkdir -p $(BUILD)/cpu_fast_scenes
+	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/rope_rest.scene sim/scenes/hard_long_rope.scene sim/scenes/catenary.scene \
+	          sim/scenes/hard_coincident.scene sim/scenes/hard_mouse_impulse.scene tb/scenes/pair_q12_12.scene \
+	          model/tests/cpu_fast_chain3d.scene model/tests/cpu_fast_coincident.scene; do \
+	  for r in centred pairwise; do v=$(BUILD)/cpu_fast_scenes/$$(basename $$s .scene)_$$r.scene; \
+	    sed "s/^rule = .*/rule = $$r/" $$s > $$v && grep -q "^rule = $$r$$" $$v && $(CPU_FAST) $$v --order redblack --check || exit 1; done; done
+	@# and it refuses what it does not run, naming the scene's line: exit status 2
+	@for s in tb/bench/bench_4x5.scene tb/bench/graph_cloth.scene tb/bench/springs_4x5.scene sim/scenes/hard_ground_impact.scene \
+	          sim/scenes/hard_mouse_grab.scene tb/scenes/previous/rope_centred.scene sim/scenes/ref002_euler.scene; do \
+	  msg=$$($(CPU_FAST) $$s --check 2>&1); rc=$$?; \
+	  if [ $$rc -eq 2 ] && echo "$$msg" | grep -q "^$$s:[0-9]*: cpu_fast runs chains"; then echo "PASS cpu_fast refuses $$s: $${msg##*; not }"; \
+	  else echo "FAIL cpu_fast $$s: exit status $$rc, not 2 with a message naming the scene's line: $$msg"; exit 1; fi; done
 
 # Every shipped scene runs in both formats.
 test-scenes: $(STRAND)

@@ -11,7 +11,9 @@ nextpnr runs of the same build (build/synth/, or make synth's record docs/synth_
 when it holds them for the same RTL; "not placed" where make synth has not placed it). In the
 same run, build/cpu_rope (model/cpu_rope.c, -O3, one core) runs the same scene in the same order in double and in float,
 timed CPU_REPEATS times, the fastest run kept (other work on the machine only slows it); its double frames are the frame engine's
-bit for bit (make test checks it). The long bodies' updates per clock at more iterations.
+bit for bit (make test checks it). Beside it, build/cpu_fast (model/cpu_fast.c: the same physics as structure of
+arrays, vectorised, -O3 -march=native) times the rows it runs, the red/black ones, the same way. The long bodies'
+updates per clock at more iterations.
 Then the 1024-node rope at rest (4x256, pipelined): for each split of a frame's constraint
 passes into substeps and iterations, the cycles a frame takes on the RTL, the clock 60 frames
 per second need, the stretch the frame engine reaches at rest, and one CPU core's frame rate.
@@ -153,10 +155,24 @@ def cpu_rate(scene, order, kind):
     return max(rates), re.search(r'cflags="([^"]*)"', text).group(1)
 
 
+def cpu_fast_rate(scene, order, kind):
+    """(updates/s, cflags) of cpu_fast (the optimised CPU program) on the scene, the fastest of CPU_REPEATS timed runs
+    as cpu_rate's; (None, None) where it does not run the scene (the serial order) or, with --reuse, where the run
+    measured nothing of it (a run before cpu_fast)."""
+    cmd = [os.path.join(BUILD, "cpu_fast"), scene, "--order", order, "--type", kind, "--min-seconds", CPU_SECONDS]
+    if order != "redblack" or (RUNS["reuse"] and " ".join(cmd) not in RUNS["out"]):
+        return None, None
+    rates = []
+    for _ in range(CPU_REPEATS):
+        text = sh(cmd)
+        rates.append(float(re.search(r"updates_per_s=([\d.]+)", text).group(1)))
+    return max(rates), re.search(r'cflags="([^"]*)"', text).group(1)
+
+
 def physics():
     """Rows of the throughput table, the rope figures and notes (as markdown lines)."""
     rows = []
-    flags = ""
+    flags = fast_flags = ""
     narrow = [b for b, _ in NARROW_BUILDS]
     for b, rule in [(b, rule) for rule in RULES for b in PHYS_BUILDS] + NARROW_BUILDS:
         scene = f"tb/bench/bench_{b}.scene" if rule == "centred" else rule_variant(f"tb/bench/bench_{b}.scene", rule)
@@ -170,24 +186,33 @@ def physics():
             mhz, mhz_text = fmax_of(name) if name in synth.BUILD_MAP else (None, "not placed")
             cpu_d, flags = cpu_rate(scene, order, "double")
             cpu_f, _ = cpu_rate(scene, order, "float")
+            fast_d, fast_flags_d = cpu_fast_rate(scene, order, "double")
+            fast_f, _ = cpu_fast_rate(scene, order, "float")
+            fast_flags = fast_flags_d or fast_flags
             hw = per_clock * mhz * 1e6 if mhz else None
             rows.append(dict(build=b, rule=rule, arch=arch, nodes=m * k, m=m, cycles=cyc, upf=upf, per_clock=per_clock,
-                             per_clock_c=per_clock_c, mhz=mhz, mhz_text=mhz_text, hw=hw, cpu_d=cpu_d, cpu_f=cpu_f))
+                             per_clock_c=per_clock_c, mhz=mhz, mhz_text=mhz_text, hw=hw, cpu_d=cpu_d, cpu_f=cpu_f,
+                             fast_d=fast_d, fast_f=fast_f))
             print(f"bench {b} {rule} {arch}: {cyc} cycles/frame, {per_clock:.4f} updates/clock, fmax {mhz_text}, "
-                  f"CPU {cpu_d / 1e6:.1f} M/s double, {cpu_f / 1e6:.1f} M/s float", flush=True)
+                  f"CPU {cpu_d / 1e6:.1f} M/s double, {cpu_f / 1e6:.1f} M/s float"
+                  + (f"; optimised {fast_d / 1e6:.1f} / {fast_f / 1e6:.1f} M/s" if fast_d else ""), flush=True)
     mega = lambda v: f"{v / 1e6:.2f}" if v is not None else "-"
     lines = ["| build | rule | architecture | nodes | cycles per frame (RTL) | updates per clock, whole frame | "
              "updates per clock in the constraint passes (of M) | fmax ECP5-85F, MHz (median) | updates/s at fmax, M | "
-             "CPU double, M/s | CPU float, M/s | core / CPU double |",
-             "|---|---|---|---|---|---|---|---|---|---|---|---|"]
+             "CPU double, M/s | CPU float, M/s | CPU optimised double, M/s | CPU optimised float, M/s | core / CPU double |",
+             "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
         ratio = f"**{r['hw'] / r['cpu_d']:.2f}x**" if r["hw"] else "-"
         lines.append(f"| {r['build']} | {r['rule']} | {r['arch']} | {r['nodes']} | {r['cycles']} | {r['per_clock']:.4f} | "
                      f"{r['per_clock_c']:.4f} ({r['per_clock_c'] / r['m']:.3f} M) | {r['mhz_text']} | {mega(r['hw'])} | "
-                     f"{mega(r['cpu_d'])} | {mega(r['cpu_f'])} | {ratio} |")
+                     f"{mega(r['cpu_d'])} | {mega(r['cpu_f'])} | {mega(r['fast_d'])} | {mega(r['fast_f'])} | {ratio} |")
     notes = ["", f"CPU: `{flags}`, one core, the same scene in the same order, the fastest of {CPU_REPEATS} timed runs of "
              f"at least {CPU_SECONDS} s each; its double frames are the frame "
-             "engine's bit for bit (`cpu_rope --check`, in make test).", ""]
+             "engine's bit for bit (`cpu_rope --check`, in make test).",
+             f"CPU optimised: `{fast_flags}` (model/cpu_fast.c), the same physics written as structure of arrays, even and "
+             "odd nodes apart, so that the compiler vectorises each colour of a pass; one core, the red/black rows only "
+             "(\"-\" otherwise), timed as above; its double frames are the frame engine's bit for bit too "
+             "(`cpu_fast --check`, in make test).", ""]
     notes += long_bodies(rows)
     # the largest placed pipelined build against the CPU, and the rope
     pipe = [r for r in rows if r["arch"] == "pipelined" and r["hw"]]
@@ -426,6 +451,9 @@ FUSED_NOTE = ", and the 4 cycles by which the first sweep, which takes the Verle
 
 def main():
     args = sys.argv[1:]
+    if "-h" in args or "--help" in args:  # (else the name would be taken for OUT and the whole bench run)
+        print(__doc__.strip() + "\n\nusage: bench.py [--reuse] [OUT]   (OUT: docs/performance.md; make bench, make bench-report)")
+        return
     if "--reuse" in args:
         args.remove("--reuse")
         try:
