@@ -376,6 +376,62 @@ def gather(bdir, gen, srcs):
     return res, pnr, packs, missing
 
 
+# The device's bound for the normalised datapath: (rule, the one-unit build, the many-unit build) whose
+# device cells (the placed or packed utilisation nextpnr reports) give a unit's marginal cost
+BOUND_PAIRS = [("centred", "m17_1x256_pipe", "m17_5x256_pipe"), ("pairwise", "m17_1x256_pair_pipe", "m17_7x256_pair_pipe")]
+BOUND_KINDS = ["TRELLIS_COMB", "TRELLIS_FF", "MULT18X18D", "DP16KD"]
+
+
+def device_util(build, pnr, packs):
+    """nextpnr's utilisation of a build ({cell: [used, available]}): its first placed seed's, else its packing's."""
+    for r in (pnr.get(build) or {}).get("ecp5") or []:
+        if r.get("util"):
+            return r["util"]
+    return (packs.get(build) or {}).get("util")
+
+
+def unit_bound(one, many, pnr, packs):
+    """A unit's marginal device cells between a one-unit and an M-unit build of the same kind, the units
+    that fit by each kind of cell, and the fewest (None when either build has no result)."""
+    u1, um = device_util(one, pnr, packs), device_util(many, pnr, packs)
+    if not u1 or not um:
+        return None
+    m = BUILD_MAP[many][0]["M"]
+    per, fit = {}, {}
+    for k in BOUND_KINDS:
+        if k not in u1 or k not in um:
+            continue
+        per[k] = (um[k][0] - u1[k][0]) / (m - 1)
+        base = u1[k][0] - per[k]          # what the core holds besides its units
+        fit[k] = int((um[k][1] - base) // per[k]) if per[k] > 0 else None
+    limits = {k: v for k, v in fit.items() if v is not None}
+    worst = min(limits, key=limits.get) if limits else None
+    return dict(m=m, per=per, fit=fit, units=limits.get(worst), by=worst)
+
+
+def bound_section(w, pnr, packs):
+    """How many units of the normalised datapath the ECP5-85F holds, and which cells bound them."""
+    w("## The normalised datapath's units on the ECP5-85F (MANTISSA = 17, Q16.16)")
+    w("")
+    w("A unit's cost is the difference between a one-unit and a many-unit build of the same kind, divided by the "
+      "units between them (nextpnr's utilisation: the one-unit build's first placed seed, the many-unit build's "
+      "packing); what the core holds besides its units (frame control, the registers, the AXI4-Lite shell of the "
+      "place-and-route wrapper) is the rest. The units that fit divide what the device has, less that rest, by a "
+      "unit's cost, kind by kind; the fewest bound the build.")
+    w("")
+    w("| rule | builds | " + " | ".join(f"{k} a unit (units that fit)" for k in BOUND_KINDS) + " | the device holds |")
+    w("|---|---|" + "--:|" * len(BOUND_KINDS) + "---|")
+    for rule, one, many in BOUND_PAIRS:
+        b = unit_bound(one, many, pnr, packs)
+        if b is None:
+            w(f"| {rule} | {one}, {many} | " + " | ".join(NOT_RUN for _ in BOUND_KINDS) + f" | {NOT_RUN} |")
+            continue
+        cells = [f"{fmt(round(b['per'][k]))} ({fmt(b['fit'][k]) if b['fit'].get(k) is not None else '-'})"
+                 if k in b["per"] else "-" for k in BOUND_KINDS]
+        w(f"| {rule} | {one}, {many} | " + " | ".join(cells) + f" | **{b['units']} units**, bound by {b['by']} |")
+    w("")
+
+
 def hierarchy_section(w, build, hier):
     """Where a pipelined unit's cells go: the module tree of one build's ecp5_hier flow."""
     w(f"## Where a pipelined unit's cells go ({build}, ECP5)")
@@ -739,6 +795,7 @@ def report(bdir, gen, out, srcs):
         w("Generic cells per node: " + ", ".join(f"{b} {fmt(t // n)}" for b, n, t in per_node) + ".")
         w("")
 
+    bound_section(w, pnr, packs)
     for hb in HIER_BUILDS:
         hierarchy_section(w, hb, res[hb].get("ecp5_hier"))
 
