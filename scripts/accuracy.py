@@ -393,13 +393,12 @@ SYNTH_POINTS = [  # (W, F, SQRT_BITS, DIV_BITS, flows)
 ]
 
 
-def synth_one(w, f, s, d, flow):
-    """One flow of make synth's 4x5 build at another format: synth.yosys_script, so that
-    this document and docs/resources.md quote the same cells for the same build."""
+def cached_yosys(flow, prm, title, result):
+    """One Yosys flow of strand_core with parameters prm through make synth's yosys_script (so that this
+    document and docs/resources.md quote the same cells for the same build), or its cached result:
+    result, a dict, gains the cells by type (by_type), the seconds and whether it was cached."""
     gen = os.path.join(ROOT, BUILD, "gen")
     srcs = [os.path.join(ROOT, x) for x in RTL_SRC]
-    prm = synth.params(synth.CHECK_CONFIG) + [("W", w), ("F", f), ("SQRT_BITS", s), ("DIV_BITS", d)]
-    title = f"the {synth.CHECK_CONFIG} build at W={w} F={f}"
     text = flow_synth.yosys_script(flow, prm, gen, srcs, title)
     key = digest(text, file_digest(srcs + gen_files(gen)))[:20]
     path = os.path.join(ROOT, CACHE, "synth_" + key + ".json")
@@ -410,46 +409,7 @@ def synth_one(w, f, s, d, flow):
         return r
     d_ = os.path.join(ROOT, ADIR, "synth", key)
     t0 = time.time()
-    r = dict(width=w, frac=f, sqrt_bits=s, div_bits=d, flow=flow)
-    try:
-        flow_synth.yosys(d_, flow, prm, srcs, title, gen=gen)
-    except Failure as e:
-        r["error"] = str(e)
-        return r
-    r["seconds"] = round(time.time() - t0, 1)
-    cells = flow_synth.cells(d_, flow)
-    r["cells"] = sum(cells.values())
-    if flow == "ice40":
-        r["luts"] = cells.get("SB_LUT4", 0)
-        r["dsps"] = cells.get("SB_MAC16", 0)
-    if flow == "ecp5":
-        r["luts"] = cells.get("LUT4", 0)
-        r["dsps"] = sum(v for k, v in cells.items() if k.startswith("MULT18X18"))
-    with open(path, "w") as fh:
-        json.dump(r, fh)
-    r["cached"] = False
-    return r
-
-
-def synth_mantissa(mb, flow="ecp5"):
-    """The cells of make synth's one-unit normalised build (MANT_BUILD) with MANTISSA = mb (0: the
-    full-width datapath, make synth's 1x256_pipe); cached like synth_one, and the same script make
-    synth runs, so MB = 17 and 0 give docs/resources.md's figures."""
-    gen = os.path.join(ROOT, BUILD, "gen")
-    srcs = [os.path.join(ROOT, x) for x in RTL_SRC]
-    prm = [(n, v) for n, v in synth.params(MANT_BUILD) if n != "MANTISSA"] + ([("MANTISSA", mb)] if mb else [])
-    title = f"{MANT_BUILD} with MANTISSA={mb}"
-    text = flow_synth.yosys_script(flow, prm, gen, srcs, title)
-    key = digest(text, file_digest(srcs + gen_files(gen)))[:20]
-    path = os.path.join(ROOT, CACHE, "synth_" + key + ".json")
-    if os.path.exists(path):
-        with open(path) as fh:
-            r = json.load(fh)
-        r["cached"] = True
-        return r
-    d_ = os.path.join(ROOT, ADIR, "synth", key)
-    t0 = time.time()
-    r = dict(mantissa=mb, flow=flow)
+    r = dict(result, flow=flow)
     try:
         flow_synth.yosys(d_, flow, prm, srcs, title, gen=gen)
     except Failure as e:
@@ -461,6 +421,30 @@ def synth_mantissa(mb, flow="ecp5"):
         json.dump(r, fh)
     r["cached"] = False
     return r
+
+
+def synth_one(w, f, s, d, flow):
+    """One flow of make synth's 4x5 build at another format."""
+    prm = synth.params(synth.CHECK_CONFIG) + [("W", w), ("F", f), ("SQRT_BITS", s), ("DIV_BITS", d)]
+    r = cached_yosys(flow, prm, f"the {synth.CHECK_CONFIG} build at W={w} F={f}",
+                     dict(width=w, frac=f, sqrt_bits=s, div_bits=d))
+    cells = r.get("by_type")
+    if cells is not None:
+        r["cells"] = sum(cells.values())
+        if flow == "ice40":
+            r["luts"] = cells.get("SB_LUT4", 0)
+            r["dsps"] = cells.get("SB_MAC16", 0)
+        if flow == "ecp5":
+            r["luts"] = cells.get("LUT4", 0)
+            r["dsps"] = sum(v for k, v in cells.items() if k.startswith("MULT18X18"))
+    return r
+
+
+def synth_mantissa(mb, flow="ecp5"):
+    """The cells of make synth's one-unit normalised build (MANT_BUILD) with MANTISSA = mb (0: the
+    full-width datapath, make synth's 1x256_pipe)."""
+    prm = [(n, v) for n, v in synth.params(MANT_BUILD) if n != "MANTISSA"] + ([("MANTISSA", mb)] if mb else [])
+    return cached_yosys(flow, prm, f"{MANT_BUILD} with MANTISSA={mb}", dict(mantissa=mb))
 
 
 def synth_all(jobs):
