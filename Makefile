@@ -338,6 +338,37 @@ test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	          model/tests/cpu_fast_chain3d.scene model/tests/cpu_fast_coincident.scene; do \
 	  for r in centred pairwise; do v=$(BUILD)/cpu_fast_scenes/$$(basename $$s .scene)_$$r.scene; \
 	    sed "s/^rule = .*/rule = $$r/" $$s > $$v && grep -q "^rule = $$r$$" $$v && $(CPU_FAST) $$v --order redblack --check || exit 1; done; done
+	@# --stretch N (the accuracy beside the speed): in double its figures are the frame engine's. stretch_max must print
+	@# as strand run's max stretch (the 4 decimals it prints), and for every N from 1 to the run's frames stretch_max
+	@# and stretch_rest must equal, as exact %.17g strings, stats_max_stretch's arithmetic redone on the frame engine's
+	@# own positions (strand run --csv writes them with %.17g, so exactly): the positions are bit-exact (--check above)
+	@# and the operations the same, in the same order, so any difference, however small, is a fault, and no tolerance
+	@# is allowed. Every N, because a window one frame off changes its largest link for some N only. A figure is the
+	@# largest link, so the chain hangs from its first node and then from its last (written under
+	@# $(BUILD)/cpu_fast_scenes/): the first link, then the last, is the one that counts, and a loop missing either end
+	@# is caught. 2D and 3D.
+	@sed 's/^pinned = 0$$/pinned = 19/' tb/bench/bench_4x5.scene > $(BUILD)/cpu_fast_scenes/bench_4x5_pinlast.scene
+	@grep -q '^pinned = 19$$' $(BUILD)/cpu_fast_scenes/bench_4x5_pinlast.scene
+	@for s in tb/bench/bench_4x5.scene $(BUILD)/cpu_fast_scenes/bench_4x5_pinlast.scene model/tests/cpu_fast_chain3d.scene; do \
+	  b=$(BUILD)/cpu_fast_scenes/$$(basename $$s .scene)_stretch; \
+	  eng=$$($(STRAND) run $$s --format double --order redblack --csv $$b.csv | sed -n 's/^max stretch \([^ ]*\) %.*/\1/p'); \
+	  awk -F, -v rest=$$(sed -n 's/^rest *= *//p' $$s) 'NR > 1 { x = $$3; y = $$4; z = NF > 4 ? $$5 : 0; \
+	      if ($$2 > 0) { dx = px - x; dy = py - y; dz = pz - z; s = sqrt(dx * dx + dy * dy + dz * dz) - rest; if (s < 0) s = -s; \
+	        s = s / rest * 100; if (!($$1 in w) || s > w[$$1]) w[$$1] = s; if ($$1 > last) last = $$1 } px = x; py = y; pz = z } \
+	    END { for (f = 1; f <= last; f++) if (w[f] > m) m = w[f]; \
+	      for (f = last; f >= 1; f--) { if (w[f] > r) r = w[f]; printf "%d %.17g %.17g\n", last - f + 1, m, r } }' $$b.csv > $$b.engine; \
+	  for n in $$(seq 1 $$(wc -l < $$b.engine)); do $(CPU_FAST) $$s --order redblack --type double --stretch $$n; done | \
+	    sed -n 's/.* rest_frames=\([^ ]*\) stretch_max=\([^ ]*\) .* stretch_rest=\([^ ]*\).*/\1 \2 \3/p' > $$b.cpu_fast; \
+	  max=$$(sed -n '1s/^[^ ]* \([^ ]*\) .*/\1/p' $$b.cpu_fast); \
+	  if [ -n "$$eng" ] && [ -s $$b.engine ] && [ "$$(awk -v m="$$max" 'BEGIN { printf "%.4f", m }')" = "$$eng" ] && cmp -s $$b.engine $$b.cpu_fast; then \
+	    echo "PASS cpu_fast $$s --stretch 1..$$(wc -l < $$b.engine): stretch_max $$max % (strand run: $$eng %) and every stretch_rest, the frame engine's"; \
+	  else echo "FAIL cpu_fast $$s --stretch: strand run's max stretch $$eng %, cpu_fast's $$max %; N, stretch_max, stretch_rest: diff $$b.engine $$b.cpu_fast"; \
+	    diff $$b.engine $$b.cpu_fast | head -5; exit 1; fi; done
+	@# and --stretch refuses an N it cannot use (not a whole number >= 1, more than the run's frames): exit status 2
+	@for a in "--stretch 0" "--stretch -3" "--stretch x" "--stretch 101" "--frames 10 --stretch 11"; do \
+	  msg=$$($(CPU_FAST) tb/bench/bench_4x5.scene --order redblack $$a 2>&1); rc=$$?; \
+	  if [ $$rc -eq 2 ] && echo "$$msg" | grep -q "^cpu_fast: --stretch "; then echo "PASS cpu_fast refuses $$a: $$(echo "$$msg" | head -1)"; \
+	  else echo "FAIL cpu_fast $$a: exit status $$rc, not 2 with a message on --stretch: $$msg"; exit 1; fi; done
 	@# and it refuses what it does not run, naming the scene's line: exit status 2
 	@for s in tb/bench/bench_4x5.scene tb/bench/graph_cloth.scene tb/bench/springs_4x5.scene sim/scenes/hard_ground_impact.scene \
 	          sim/scenes/hard_mouse_grab.scene tb/scenes/previous/rope_centred.scene sim/scenes/ref002_euler.scene; do \

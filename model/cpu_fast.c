@@ -3,7 +3,7 @@
  * core, float or double, laid out and written so that the compiler vectorises them.
  *
  * usage: cpu_fast SCENE [--frames N] [--type float|double] [--order redblack]
- *                 [--min-seconds S] [--check]
+ *                 [--min-seconds S] [--check | --stretch N]
  *
  * The physics is cpu_rope's and the frame engine's (model/engine_body.h) in the red/black
  * order: per substep the Verlet step (damping, gravity) and the mouse impulse of every
@@ -25,6 +25,16 @@
  * the constraint updates per second (node updates of the centred rule, link updates of the
  * pairwise rule, every iteration of every substep) and the flags it was built with
  * (make cpu-fast: -O3 -march=native -fno-math-errno, ISO C11, so no FMA contraction).
+ *
+ * --stretch N: the accuracy that goes beside the speed. Instead of timing, the frames are run
+ * once from the scene's start in the chosen type and the line printed gives stretch_max, the
+ * largest |length - rest| / rest of any link (i, i+1) of the chain in frames 1..frames, and
+ * stretch_rest, the same over the last N frames only (the rope at rest), both in percent;
+ * lengths are computed in double from the run's positions, as the frame engine's
+ * stats_max_stretch computes them (model/engine.c), so in double stretch_max is the figure
+ * `strand run SCENE --format double` prints as its max stretch (make test-model checks it).
+ * A float run at a large distance from the origin may not hold the rope as double does: its
+ * positions' resolution can be coarser than a substep's gravity step.
  */
 #define _POSIX_C_SOURCE 200809L
 #include <math.h>
@@ -131,7 +141,7 @@ static int usage(const char *why)
 {
     if (why) fprintf(stderr, "cpu_fast: %s\n", why);
     fprintf(stderr, "usage: cpu_fast SCENE [--frames N] [--type float|double] [--order redblack] [--min-seconds S] "
-                    "[--check]\n");
+                    "[--check | --stretch N]\n");
     return 2;
 }
 
@@ -195,10 +205,54 @@ static const char *shape_chain(fast_shape *sh, const scene *sc, const sim_dbl *r
     return NULL;
 }
 
+/*
+ * --stretch: the largest |length - rest| / rest (percent) of the chain's links (i, i+1) at
+ * the run's positions, in double whatever the run's type, with stats_max_stretch's
+ * arithmetic (a 2D chain's z is 0, which adds nothing to a length's square). A NaN is kept
+ * (stats_max_stretch lets a later finite value replace it): a diverged run must not
+ * report a finite stretch.
+ */
+static double worse(double worst, double s) { return isnan(worst) || s <= worst ? worst : s; }
+
+static double chain_stretch(const fast_ops *ops, const void *st, const fast_shape *sh)
+{
+    const double rest = sh->sc->chain_rest;
+    double worst = 0, a[3] = {0, 0, 0}, b[3] = {0, 0, 0};
+    for (int k = 0; k < sh->sc->dim; k++) a[k] = ops->position(st, sh, 0, k);
+    for (int i = 0; i + 1 < sh->n; i++) {
+        for (int k = 0; k < sh->sc->dim; k++) b[k] = ops->position(st, sh, i + 1, k);
+        double len = sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2]));
+        worst = worse(worst, fabs(len - rest) / rest * 100.0);
+        memcpy(a, b, sizeof a);
+    }
+    return worst;
+}
+
+/* The scene's frames once from its start: stretch_max over frames 1..frames, stretch_rest over the last `last`. */
+static void run_stretch(const fast_ops *ops, void *st, const fast_shape *sh, int frames, int last, const char *type)
+{
+    double max = 0, rest = 0;
+    int max_frame = 0;
+    ops->reset(st, sh);
+    for (int f = 1; f <= frames; f++) {
+        ops->frame(st, sh, f - 1);
+        double s = chain_stretch(ops, st, sh);
+        if (f == 1 || (!isnan(max) && !(s <= max))) { /* the first frame that reached it; a NaN stays */
+            max = s;
+            max_frame = f;
+        }
+        if (f > frames - last) rest = f == frames - last + 1 ? s : worse(rest, s);
+    }
+    /* %.17g: the figures round-trip, so that make test-model can compare them with the frame engine's exactly */
+    printf("cpu_fast %s type=%s order=redblack nodes=%d substeps=%d iterations=%d frames=%d rest_frames=%d "
+           "stretch_max=%.17g stretch_max_frame=%d stretch_rest=%.17g\n",
+           sh->sc->name, type, sh->n, sh->sc->substeps, sh->sc->iterations, frames, last, max, max_frame, rest);
+}
+
 int main(int argc, char **argv)
 {
     const char *path = NULL, *type = "double";
-    int frames = -1, check = 0, redblack = 0;
+    int frames = -1, check = 0, redblack = 0, stretch = 0; /* stretch: --stretch N's N, 0 without it */
     double min_seconds = 1.0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
@@ -211,6 +265,13 @@ int main(int argc, char **argv)
             if (strcmp(o, "redblack")) return usage("--order takes redblack");
             redblack = 1;
         } else if (!strcmp(a, "--check")) check = 1;
+        else if (!strcmp(a, "--stretch") && i + 1 < argc) {
+            char *end;
+            long v = strtol(argv[++i], &end, 10);
+            if (end == argv[i] || *end || v < 1 || v > 1000000000)
+                return usage("--stretch N: N, the frames at rest (the last N of the run), must be a whole number >= 1");
+            stretch = (int)v;
+        }
         else if (a[0] == '-') return usage("unknown option or missing value");
         else if (!path) path = a;
         else return usage("more than one SCENE");
@@ -221,6 +282,7 @@ int main(int argc, char **argv)
     if (!(min_seconds >= 0)) return usage("--min-seconds must be >= 0");
     const int is_float = !strcmp(type, "float");
     if (check && is_float) return usage("--check compares the double type with the frame engine");
+    if (check && stretch) return usage("--check and --stretch: one at a time");
 
     scene sc;
     char err[SCENE_ERR_LEN];
@@ -240,6 +302,12 @@ int main(int argc, char **argv)
         return 2;
     }
     if (frames < 0) frames = sc.frames;
+    if (stretch > frames) {
+        fprintf(stderr, "cpu_fast: --stretch %d: more frames at rest than the run's %d frames (the scene's, or --frames)\n",
+                stretch, frames);
+        scene_free(&sc);
+        return usage(NULL);
+    }
 
     sim_dbl ref;
     fast_shape sh;
@@ -289,21 +357,24 @@ int main(int argc, char **argv)
         return 0;
     }
 
-    long runs = 0;
-    double t0 = now(), t;
-    double sink = 0; /* the last node's x, so that the work is used */
-    do {
-        ops->reset(st, &sh);
-        for (int f = 0; f < frames; f++) ops->frame(st, &sh, f);
-        sink += ops->position(st, &sh, sh.n - 1, 0);
-        runs++;
-        t = now() - t0;
-    } while (t < min_seconds);
-    double updates = (double)per_frame * frames * runs;
-    printf("cpu_fast %s type=%s order=redblack nodes=%d updates_per_frame=%ld frames=%ld seconds=%.6f updates_per_s=%.0f "
-           "last_x=%g cflags=\"%s\"\n",
-           sc.name, type, sh.n, per_frame, (long)frames * runs, t, t > 0 ? updates / t : 0, sink / (double)runs,
-           CPU_FAST_CFLAGS);
+    if (stretch) run_stretch(ops, st, &sh, frames, stretch, type);
+    else {
+        long runs = 0;
+        double t0 = now(), t;
+        double sink = 0; /* the last node's x, so that the work is used */
+        do {
+            ops->reset(st, &sh);
+            for (int f = 0; f < frames; f++) ops->frame(st, &sh, f);
+            sink += ops->position(st, &sh, sh.n - 1, 0);
+            runs++;
+            t = now() - t0;
+        } while (t < min_seconds);
+        double updates = (double)per_frame * frames * runs;
+        printf("cpu_fast %s type=%s order=redblack nodes=%d updates_per_frame=%ld frames=%ld seconds=%.6f "
+               "updates_per_s=%.0f last_x=%g cflags=\"%s\"\n",
+               sc.name, type, sh.n, per_frame, (long)frames * runs, t, t > 0 ? updates / t : 0, sink / (double)runs,
+               CPU_FAST_CFLAGS);
+    }
     ops->destroy(st);
     free(sh.pins);
     free(sh.pin_links[0]);
