@@ -15,6 +15,9 @@
  *   LEG(h, d, miss)        sqrt(h^2 - |d|^2) (fixed: fx_sqrt of the exact difference); *miss if |d| > h
  *   ALONG(d, rest, t)      t = d rest / |d|, the vector of length rest along d; false when |d| = 0
  *                          (fixed: fx_mul(d, fx_div(rest, LEN(d))), or with a mantissa fx_along)
+ *   SPRING_DIR(d, len, u)  a spring's length |d| and unit vector u = d / |d|; false when |d| = 0
+ *                          (fixed: LEN and SDIV, u in Q.F; with a mantissa fx_spring_dir, u in Q2.(W-2))
+ *   DIRMUL(a, u)           a times a component of SPRING_DIR's u (MUL, or with a mantissa UMUL)
  *   FROM(x)                a scene constant in this number type
  *   LESS(a, b)             a < b
  *
@@ -144,17 +147,14 @@ void P(spring_edge)(SIM *s, int e)
     const scene_edge *ed = &s->sc->edges[e];
     NUM d[3] = {FROM(0), FROM(0), FROM(0)}, u[3] = {FROM(0), FROM(0), FROM(0)};
     NUM len, stretch, vn = FROM(0), f;
-    bool zero;
     int a = ed->a, b = ed->b;
     for (int k = 0; k < s->dim; k++) d[k] = SUB(s->pos[b][k], s->pos[a][k]);
-    len = LEN(d);
-    if (!LESS(FROM(0), len)) {
+    if (!SPRING_DIR(d, &len, u)) {
         s->skipped++; /* coincident ends: no direction, no force */
         return;
     }
     for (int k = 0; k < s->dim; k++) {
         NUM va, vb;
-        u[k] = SDIV(d[k], len, &zero);
         if (s->sc->integrator == INTEGRATOR_VERLET) {
             va = SUB(s->pos[a][k], s->prev[a][k]);
             vb = SUB(s->pos[b][k], s->prev[b][k]);
@@ -162,12 +162,12 @@ void P(spring_edge)(SIM *s, int e)
             va = s->vel[a][k];
             vb = s->vel[b][k];
         }
-        vn = ADD(vn, MUL(SUB(vb, va), u[k]));
+        vn = ADD(vn, DIRMUL(SUB(vb, va), u[k]));
     }
     stretch = SUB(len, s->rest[e]);
     f = MAC2(s->ks, stretch, s->kd, vn);
     for (int k = 0; k < s->dim; k++) {
-        NUM fk = MUL(f, u[k]);
+        NUM fk = DIRMUL(f, u[k]);
         s->acc[a][k] = ADD(s->acc[a][k], fk);
         s->acc[b][k] = SUB(s->acc[b][k], fk);
     }

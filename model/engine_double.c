@@ -38,6 +38,8 @@ static inline double dbl_leg(double h, const double d[3], bool *miss)
 #define LESS(a, b) ((a) < (b))
 #define MAC2(a, b, c, d) ((a) * (b) + (c) * (d))
 #define ALONG(d, rest, t) dbl_along((d), (rest), (t))
+#define SPRING_DIR(d, len, u) dbl_spring_dir((d), (len), (u))
+#define DIRMUL(a, u) ((a) * (u))
 
 /* t = d (rest / |d|), false when |d| = 0 */
 static inline bool dbl_along(const double d[3], double rest, double t[3])
@@ -46,6 +48,17 @@ static inline bool dbl_along(const double d[3], double rest, double t[3])
     double ratio = dbl_div(rest, LEN(d), &zero);
     for (int k = 0; k < 3; k++) t[k] = d[k] * ratio;
     return !zero;
+}
+
+/* |d| and d / |d|, false when |d| = 0 */
+static inline bool dbl_spring_dir(const double d[3], double *len, double u[3])
+{
+    bool zero;
+    *len = LEN(d);
+    for (int k = 0; k < 3; k++) u[k] = 0;
+    if (!(*len > 0)) return false;
+    for (int k = 0; k < 3; k++) u[k] = dbl_div(d[k], *len, &zero);
+    return true;
 }
 
 #include "engine_body.h"

@@ -25,6 +25,8 @@
 #define LESS(a, b) ((a) < (b))
 #define MAC2(a, b, c, d) fx_mac2(F_, (a), (b), (c), (d))
 #define ALONG(d, rest, t) along(s, (d), (rest), (t))
+#define SPRING_DIR(d, len, u) spring_dir(s, (d), (len), (u))
+#define DIRMUL(a, u) (s->fmt.mantissa ? fx_mul_unit(F_, (a), (u)) : fx_mul(F_, (a), (u)))
 
 /* t = d rest / |d|: the full-width root, divide and products, or the normalised datapath */
 static bool along(const sim_fx *s, const fx_t d[3], fx_t rest, fx_t t[3])
@@ -35,6 +37,18 @@ static bool along(const sim_fx *s, const fx_t d[3], fx_t rest, fx_t t[3])
     ratio = DIV(rest, LEN(d), &zero);
     for (int k = 0; k < 3; k++) t[k] = k < s->dim ? MUL(d[k], ratio) : 0;
     return !zero;
+}
+
+/* a spring's length and unit vector: the full-width root and divides (u in Q.F), or fx_spring_dir */
+static bool spring_dir(const sim_fx *s, const fx_t d[3], fx_t *len, fx_t u[3])
+{
+    bool zero;
+    if (s->fmt.mantissa) return fx_spring_dir(&s->fmt, s->dim, d, len, u);
+    *len = LEN(d);
+    for (int k = 0; k < 3; k++) u[k] = 0;
+    if (!(*len > 0)) return false;
+    for (int k = 0; k < s->dim; k++) u[k] = SDIV(d[k], *len, &zero);
+    return true;
 }
 
 #include "engine_body.h"

@@ -234,3 +234,15 @@ bool fx_along(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest, fx_t t[
     for (int k = 0; k < dim; k++) t[k] = fx_denorm(fmt, (int64_t)d[k] * qm, j + 1 - b - er + sn);
     return true;
 }
+
+bool fx_spring_dir(const fx_format *fmt, int dim, const fx_t d[3], fx_t *len, fx_t u[3])
+{
+    int64_t dot = 0;
+    *len = 0;
+    if (!fx_along(fmt, dim, d, (fx_t)(INT64_C(1) << (fmt->width - 2)), u)) return false;
+    /* u is parallel to d, so every product is >= 0 (or a rounding's 0) and the sum stays below
+       |d| 2^(W-2) (1 + 2^-5) < 2^63 */
+    for (int k = 0; k < dim; k++) dot += (int64_t)d[k] * u[k];
+    *len = fx_sat(fmt, fx_round_shift(dot, fmt->width - 2));
+    return *len > 0;
+}

@@ -199,6 +199,14 @@ uint32_t fx_norm_rest(int mb, uint32_t rest, int *er);
 fx_t fx_denorm(const fx_format *fmt, int64_t prod, int sh);
 /* Steps 1-6. */
 bool fx_along(const fx_format *fmt, int dim, const fx_t d[3], fx_t rest, fx_t t[3]);
+/*
+ * A spring's direction and length on the normalised datapath: u = fx_along(d, 2^(W-2)), the unit
+ * vector along d in Q2.(W-2) (d's direction exactly, its length within a few 2^-MB of one), and
+ * len = d . u, the exact sum of the DIM products rounded once by W - 2 bits (ties to even) and
+ * saturated: |d| within a few 2^-MB. False (no force) when d = 0 or len <= 0. The force's
+ * products take u with fx_mul_unit.
+ */
+bool fx_spring_dir(const fx_format *fmt, int dim, const fx_t d[3], fx_t *len, fx_t u[3]);
 
 /* Conversions for scene constants and reports (not used inside the datapath). */
 fx_t fx_from_double(const fx_format *fmt, double v);

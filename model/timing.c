@@ -53,6 +53,9 @@ long hw_toward_pipe_latency(const hw_params *hp)
 
 long hw_spring_pipe_latency(const hw_params *hp)
 {
+    if (hp->mantissa) /* spring_force_pipe.v: d, fx_along_pipe (u), len's products, len, len - rest, then as below
+                         from T_U: the vn products ... the forces' rounding into the output register */
+        return hw_along_pipe_latency(hp) + 15;
     /* spring_force_pipe.v: d, v_a, v_b; dv and |d|; the squares (two stages), their sum, the root
        (SQRT_BITS + 3), the DIM divides side by side (DIV_BITS + 3), u signed, the vn products (two
        stages) and their rounding, vn summed (two stages), ks (len - rest) and kd vn (two stages),
@@ -68,6 +71,8 @@ long hw_spring_sweep(const hw_params *hp)
 
 long hw_spring_latency(const hw_params *hp)
 {
+    if (hp->mantissa) /* spring_force.v: one spring through spring_force_pipe, done the cycle after its result */
+        return hw_spring_pipe_latency(hp) + 1;
     /* spring_force.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline),
        the root, DIM divides, DIM vn products and ks (len - rest), two waits for vn (products are
        used 3 cycles after their issue), kd vn, three waits for f, DIM F.k, the last used 3 cycles
@@ -184,7 +189,7 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                  hw_toward_pipe_latency(hp), hp->mantissa ? "" : steps);
     return snprintf(out, (size_t)len,
                     "%s latency LT = %s = %ld\n"
-                    "spring_force latency LS = SQRT_BITS + DIM DIV_BITS + 5 DIM + 15 = %ld\n"
+                    "spring_force latency LS = %s = %ld\n"
                     "%s"
                     "constraint pass = %s = %ld%s\n"
                     "spring pass = %s = %ld\n"
@@ -193,12 +198,16 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     hp->projection ? "toward_prev" : "toward",
                     hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20"
                     : hp->mantissa ? "toward_pipe's LA + 3, + 1 (MANTISSA > 0)" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
-                    hw_toward_latency(hp), hw_spring_latency(hp), pipe,
+                    hw_toward_latency(hp),
+                    hp->mantissa ? "spring_force_pipe's LA + 15, + 1 (MANTISSA > 0)" : "SQRT_BITS + DIM DIV_BITS + 5 DIM + 15",
+                    hw_spring_latency(hp), pipe,
                     graph_streams(hp) ? "2 E_RODS + COLOURS (LP + 3) (pipelined graph)"
                     : hp->arch        ? "2 sweeps of SP = max(floor(K/2) + 2, LP + 4) (pipelined)"
                     : hp->rule == 0 ? "2 + N (2 LT + 2) (centred)" : "links (LT + 5) (pairwise)",
                     hw_constraint_pass(hp), last,
-                    chain_streams(hp) ? "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)" : "1 + links (LS + 5)",
+                    chain_streams(hp) ? (hp->mantissa ? "1 + one sweep (K + LSP + 4), LSP = LA + 15 (pipelined)"
+                                                      : "1 + one sweep (K + LSP + 4), LSP = LSQ + LDV + 20 (pipelined)")
+                                      : "1 + links (LS + 5)",
                     hw_spring_pass(hp), verlet,
                     hp->fuse ? "ITER passes, the Verlet step in the first sweep ((2 ITER - 1) SP + SL + 4)"
                     : chain_streams(hp) ? "ITER passes ((2 ITER - 1) SP + SL)" : "ITER passes", steps_term, hp->arch ? "5" : "4",

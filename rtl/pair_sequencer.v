@@ -172,9 +172,9 @@ module pair_sequencer #(
             wire [DIM*W-1:0] force_a;
             /* verilator lint_off PINCONNECTEMPTY */
             // busy is not needed: the FSM waits for done; saturation is the result itself
-            spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_force (
+            spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .DIM(DIM)) u_force (
                 .clk(clk), .reset(reset), .start(state_q == S_GO),
-                .a(a_pos), .a_p(a_prev), .b(rd_pos), .b_p(rd_prev),  // b arrives as the force starts
+                .pos_a(a_pos), .prev_a(a_prev), .pos_b(rd_pos), .prev_b(rd_prev),  // b arrives as the force starts
                 .rest_len(link_rest), .ks(ks), .kd(kd),
                 .busy(), .done(t_done), .f(force_a), .valid(t_valid));
             for (k = 0; k < DIM; k = k + 1) begin : g_lane

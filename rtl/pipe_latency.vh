@@ -32,7 +32,9 @@ function integer toward_prev_pipe_latency(input integer sqrt_bits, input integer
     toward_prev_pipe_latency = 2 * sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 28;
 endfunction
 
-function integer spring_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps);
-    spring_pipe_latency = sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 20;
+function integer spring_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps,
+                                     input integer mantissa);
+    spring_pipe_latency = mantissa > 0 ? along_pipe_latency(mantissa) + 15
+                                       : sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 20;
 endfunction
 

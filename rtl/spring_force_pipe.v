@@ -17,6 +17,14 @@
  *     F.k = round(f u.k)                        the force on A; B takes -F
  * ok = 0 when len = 0 (the dividers' divide-by-zero flag): no force.
  *
+ * MANTISSA > 0, the normalised datapath (model/fixed.h fx_spring_dir): u is fx_along_pipe's
+ * vector of length 2^(W-2) along d (a unit vector in Q2.(W-2): d's direction exactly, its length
+ * from MANTISSA-bit mantissas) and len = d . u, the exact sum of the DIM products rounded once by
+ * W - 2 bits; the products with u (vn, the forces) are rounded by W - 2 bits too (fx_mul_unit);
+ * ok = 0 also when len <= 0. The stages from T_U on are the same, with T_U = 2 + LA (LA =
+ * fx_along_pipe's 21): len's products in T_U + 1 .. T_U + 3, len in T_U + 4, len - rest in
+ * T_U + 5; LATENCY = LA + 15 = 36 (hw_spring_pipe_latency).
+ *
  * Algorithm: the root and the dividers are fx_sqrt_pipe and fx_div_pipe (the digit-by-
  * digit root and divide of fx_sqrt and fx_div, STEPS resolved bits a stage, so SQRT_BITS
  * and DIV_BITS stay the accuracy knobs and the results are spring_force's bit for bit).
@@ -48,6 +56,7 @@ module spring_force_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer MANTISSA  = 0,      // 0: the full-width root and divides; 6 .. 20: fx_along_pipe
     parameter integer STEPS     = 1,      // root and divide iterations a pipeline stage
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
@@ -78,12 +87,14 @@ module spring_force_pipe #(
     localparam integer LSQ     = sqrt_pipe_latency(SQRT_BITS, STEPS);
     localparam integer LDV     = div_pipe_latency(DIV_BITS, STEPS);
     localparam integer T_LEN   = LSQ + 6;                // len on the root's output
-    localparam integer T_U     = T_LEN + LDV + 1;        // the quotients on the dividers' outputs
+    localparam integer T_U     = MANTISSA > 0 ? 2 + along_pipe_latency(MANTISSA)   // u on fx_along_pipe's output
+                                              : T_LEN + LDV + 1;                   // the quotients on the dividers'
     localparam integer LATENCY = T_U + 13;
+    localparam integer F_U     = MANTISSA > 0 ? W - 2 : F;   // u's fraction bits: the products with it round by them
     // the spring stream times its writes by pipe_latency.vh: it must count these stages
-    `STRAND_CHECK(spring_force_pipe_latency_formula, LATENCY == spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS),
+    `STRAND_CHECK(spring_force_pipe_latency_formula, LATENCY == spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA),
                   ("spring_force_pipe: its stages (%0d) and pipe_latency.vh (%0d) disagree in %m", LATENCY,
-                   spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS)))
+                   spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA)))
 
     // ---- the valid bits: bit i is the operation in cycle i + 1 ----
     reg [LATENCY-1:0] v_q;
@@ -121,62 +132,121 @@ module spring_force_pipe #(
     /* verilator lint_on PINCONNECTEMPTY */
     always @(posedge clk) {d2, va2, vb2} <= {d1, va1, vb1};
 
-    // ---- cycles 2 .. 4: the squares, their sum; then the root ----
-    wire [DIM*2*W-1:0] sq4;
+    // ---- the front: u in T_U + 1 (u1), ok there (ok1), len - rest with ks and kd in T_U + 6,
+    // and (MANTISSA) whether len > 0 in T_U + 10; dv rides to T_U ----
+    reg  [DW-1:0] u1, dv1;     // in cycle T_U + 1
+    reg           ok1;
+    wire [W-1:0]  stretch_f, ks_f, kd_f;
+    wire          len_ok_f;
+    wire [DW-1:0] dv_u;
     generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_sq
-            fx_mul_pipe #(.W(W)) u_sq (.clk(clk), .a(d2[k*W +: W]), .b(d2[k*W +: W]), .prod(sq4[k*2*W +: 2*W]));
-        end
-    endgenerate
-    reg [2*W-1:0] radicand5;  // each square <= 2^(2W-2): three fit 2W bits
-    always @(posedge clk)
-        radicand5 <= sq4[0 +: 2*W] + sq4[2*W +: 2*W] + (DIM == 3 ? sq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
-    wire [W-1:0] len;
-    /* verilator lint_off PINCONNECTEMPTY */
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
-    /* verilator lint_on PINCONNECTEMPTY */
-
-    // rings from cycle 2: |d|, rest, ks and kd to T_LEN; dv and the signs to T_U
-    wire [DW-1:0]  dabs_len, dv_u;
-    wire [W-1:0]   rest_len, ks_len, kd_len;
-    wire [DIM-1:0] dneg_u;
-    delay_line #(.WIDTH(DW + 3 * W), .DELAY(T_LEN - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
-        .clk(clk), .reset(reset), .in({kd2, ks2, rest2, dabs2}), .out({kd_len, ks_len, rest_len, dabs_len}));
-    delay_line #(.WIDTH(DW + DIM), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_dv_ring (
-        .clk(clk), .reset(reset), .in({dneg2, dv2}), .out({dneg_u, dv_u}));
-
-    // ---- T_LEN: the dividers start; stretch = len - rest, carried to T_U + 6 with ks and kd ----
-    wire [DW-1:0]  qmag;     // |u.k|
-    wire [DIM-1:0] dz;
-    wire [W-1:0]   stretch_len, stretch_f, ks_f, kd_f;
-    /* verilator lint_off PINCONNECTEMPTY */
-    generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_div
-            fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
-                .clk(clk), .num(dabs_len[k*W +: W]), .den(len), .result(qmag[k*W +: W]), .div_by_zero(dz[k]), .sat());
-        end
-    endgenerate
-    fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len), .b(rest_len), .y(stretch_len), .sat());
-    /* verilator lint_on PINCONNECTEMPTY */
-    reg [W-1:0] stretch_q, ks_q, kd_q;
-    always @(posedge clk) {stretch_q, ks_q, kd_q} <= {stretch_len, ks_len, kd_len};
-    delay_line #(.WIDTH(3 * W), .DELAY(T_U + 6 - (T_LEN + 1)), .BLOCK_MIN(BLOCK_MIN)) u_stretch_ring (
-        .clk(clk), .reset(reset), .in({kd_q, ks_q, stretch_q}), .out({kd_f, ks_f, stretch_f}));
-
-    // ---- T_U: u.k with its sign; T_U + 1: the vn products ----
-    reg [DW-1:0] u1, dv1;     // in cycle T_U + 1
-    reg          ok1;
-    generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_u
+        if (MANTISSA > 0) begin : g_norm
+            // u = fx_along_pipe(d, 2^(W-2)) from cycle 2 (its rest a constant: synthesis folds that path)
+            localparam [W-1:0] ONE_U = {2'b01, {(W-2){1'b0}}};
+            wire [DW-1:0] u_a;
+            wire          ok_a;
+            fx_along_pipe #(.W(W), .MB(MANTISSA), .DIM(DIM), .BLOCK_MIN(BLOCK_MIN)) u_along (
+                .clk(clk), .reset(reset), .d(d2), .rest(ONE_U), .t(u_a), .ok(ok_a));
+            // d, dv, rest, ks and kd ride to T_U
+            wire [DW-1:0] d_u;
+            wire [W-1:0]  rest_u, ks_u, kd_u;
+            delay_line #(.WIDTH(2 * DW + 3 * W), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_d_ring (
+                .clk(clk), .reset(reset), .in({kd2, ks2, rest2, dv2, d2}), .out({kd_u, ks_u, rest_u, dv_u, d_u}));
+            reg [DW-1:0] d_u1;
+            reg [W-1:0]  rest_1, rest_2, rest_3, rest_4, ks_1, ks_2, ks_3, ks_4, ks_5, kd_1, kd_2, kd_3, kd_4, kd_5;
+            always @(posedge clk) begin
+                u1    <= u_a;
+                ok1   <= ok_a;
+                dv1   <= dv_u;
+                d_u1  <= d_u;
+                {rest_1, ks_1, kd_1} <= {rest_u, ks_u, kd_u};
+                {rest_2, ks_2, kd_2} <= {rest_1, ks_1, kd_1};
+                {rest_3, ks_3, kd_3} <= {rest_2, ks_2, kd_2};
+                {rest_4, ks_4, kd_4} <= {rest_3, ks_3, kd_3};
+                {ks_5, kd_5}         <= {ks_4, kd_4};
+            end
+            // T_U + 1 .. + 3: the products d.k u.k (each >= 0: u is parallel to d); their exact sum
+            // (below 2^(2W-1)), rounded by W - 2 bits: len in T_U + 4
+            wire [DIM*2*W-1:0] lprod;
+            for (k = 0; k < DIM; k = k + 1) begin : g_len
+                fx_mul_pipe #(.W(W)) u_lmul (.clk(clk), .a(d_u1[k*W +: W]), .b(u1[k*W +: W]), .prod(lprod[k*2*W +: 2*W]));
+            end
+            wire [2*W-1:0] dot = lprod[0 +: 2*W] + lprod[2*W +: 2*W] + (DIM == 3 ? lprod[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
+            wire [W-1:0]   len_r;
+            /* verilator lint_off PINCONNECTEMPTY */
+            fx_round #(.W(W), .F(W - 2)) u_lround (.prod(dot), .y(len_r), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+            reg  [W-1:0] len_4, stretch_5, stretch_6, ks_6, kd_6;
+            wire [W-1:0] stretch_w;
+            /* verilator lint_off PINCONNECTEMPTY */
+            fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len_4), .b(rest_4), .y(stretch_w), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+            reg [5:0] len_pos_q;      // len > 0, from T_U + 5 to T_U + 10
+            always @(posedge clk) begin
+                len_4     <= len_r;
+                stretch_5 <= stretch_w;
+                stretch_6 <= stretch_5;
+                ks_6      <= ks_5;
+                kd_6      <= kd_5;
+                len_pos_q <= {len_pos_q[4:0], !len_4[W-1] && len_4 != {W{1'b0}}};
+            end
+            assign {stretch_f, ks_f, kd_f} = {stretch_6, ks_6, kd_6};
+            assign len_ok_f = len_pos_q[5];
+            wire unused_norm = &{1'b0, dneg2, dabs2};
+        end else begin : g_full
+            // ---- cycles 2 .. 4: the squares, their sum; then the root ----
+            wire [DIM*2*W-1:0] sq4;
+            for (k = 0; k < DIM; k = k + 1) begin : g_sq
+                fx_mul_pipe #(.W(W)) u_sq (.clk(clk), .a(d2[k*W +: W]), .b(d2[k*W +: W]), .prod(sq4[k*2*W +: 2*W]));
+            end
+            reg [2*W-1:0] radicand5;  // each square <= 2^(2W-2): three fit 2W bits
             always @(posedge clk)
-                u1[k*W +: W] <= dneg_u[k] ? ~qmag[k*W +: W] + 1'b1 : qmag[k*W +: W];  // |u.k| <= 2^(W-1)-1
+                radicand5 <= sq4[0 +: 2*W] + sq4[2*W +: 2*W] + (DIM == 3 ? sq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
+            wire [W-1:0] len;
+            /* verilator lint_off PINCONNECTEMPTY */
+            fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt (.clk(clk), .radicand(radicand5), .result(len), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+
+            // rings from cycle 2: |d|, rest, ks and kd to T_LEN; dv and the signs to T_U
+            wire [DW-1:0]  dabs_len;
+            wire [W-1:0]   rest_len, ks_len, kd_len;
+            wire [DIM-1:0] dneg_u;
+            delay_line #(.WIDTH(DW + 3 * W), .DELAY(T_LEN - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
+                .clk(clk), .reset(reset), .in({kd2, ks2, rest2, dabs2}), .out({kd_len, ks_len, rest_len, dabs_len}));
+            delay_line #(.WIDTH(DW + DIM), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_dv_ring (
+                .clk(clk), .reset(reset), .in({dneg2, dv2}), .out({dneg_u, dv_u}));
+
+            // ---- T_LEN: the dividers start; stretch = len - rest, carried to T_U + 6 with ks and kd ----
+            wire [DW-1:0]  qmag;     // |u.k|
+            wire [DIM-1:0] dz;
+            wire [W-1:0]   stretch_len;
+            /* verilator lint_off PINCONNECTEMPTY */
+            for (k = 0; k < DIM; k = k + 1) begin : g_div
+                fx_div_pipe #(.W(W), .F(F), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
+                    .clk(clk), .num(dabs_len[k*W +: W]), .den(len), .result(qmag[k*W +: W]), .div_by_zero(dz[k]), .sat());
+            end
+            fx_add #(.W(W), .SUB(1)) u_stretch (.sub(1'b1), .a(len), .b(rest_len), .y(stretch_len), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+            reg [W-1:0] stretch_q, ks_q, kd_q;
+            always @(posedge clk) {stretch_q, ks_q, kd_q} <= {stretch_len, ks_len, kd_len};
+            delay_line #(.WIDTH(3 * W), .DELAY(T_U + 6 - (T_LEN + 1)), .BLOCK_MIN(BLOCK_MIN)) u_stretch_ring (
+                .clk(clk), .reset(reset), .in({kd_q, ks_q, stretch_q}), .out({kd_f, ks_f, stretch_f}));
+
+            // ---- T_U: u.k with its sign ----
+            for (k = 0; k < DIM; k = k + 1) begin : g_u
+                always @(posedge clk)
+                    u1[k*W +: W] <= dneg_u[k] ? ~qmag[k*W +: W] + 1'b1 : qmag[k*W +: W];  // |u.k| <= 2^(W-1)-1
+            end
+            always @(posedge clk) begin
+                dv1 <= dv_u;
+                ok1 <= !dz[0];        // every divider has den = len: one flag says it
+            end
+            wire unused_dz = &{1'b0, dz[DIM-1:1]};
+            assign len_ok_f = 1'b1;
         end
     endgenerate
-    always @(posedge clk) begin
-        dv1 <= dv_u;
-        ok1 <= !dz[0];        // every divider has den = len: one flag says it
-    end
-    wire unused_dz = &{1'b0, dz[DIM-1:1]};
+
+    // ---- T_U + 1: the vn products ----
     wire [DIM*2*W-1:0] vprod;  // in T_U + 3
     wire [DW-1:0]      vround;
     reg  [DW-1:0]      vterm;  // in T_U + 4
@@ -184,7 +254,7 @@ module spring_force_pipe #(
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_vn
             fx_mul_pipe #(.W(W)) u_vmul (.clk(clk), .a(dv1[k*W +: W]), .b(u1[k*W +: W]), .prod(vprod[k*2*W +: 2*W]));
-            fx_round #(.W(W), .F(F)) u_vround (.prod(vprod[k*2*W +: 2*W]), .y(vround[k*W +: W]), .sat());
+            fx_round #(.W(W), .F(F_U)) u_vround (.prod(vprod[k*2*W +: 2*W]), .y(vround[k*W +: W]), .sat());
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
@@ -231,12 +301,12 @@ module spring_force_pipe #(
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_f
             fx_mul_pipe #(.W(W)) u_fmul (.clk(clk), .a(f_q), .b(u_f[k*W +: W]), .prod(fprod[k*2*W +: 2*W]));
-            fx_round #(.W(W), .F(F)) u_fr (.prod(fprod[k*2*W +: 2*W]), .y(fround[k*W +: W]), .sat());
+            fx_round #(.W(W), .F(F_U)) u_fr (.prod(fprod[k*2*W +: 2*W]), .y(fround[k*W +: W]), .sat());
         end
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
     always @(posedge clk) begin
-        ok_11  <= ok_f;
+        ok_11  <= ok_f && len_ok_f;
         ok_12  <= ok_11;
         out_ok <= ok_12;
         out_f  <= fround;

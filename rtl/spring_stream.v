@@ -65,7 +65,7 @@ module spring_stream #(
 
     localparam integer DW    = DIM * W;
 `include "pipe_latency.vh"
-    localparam integer LS    = spring_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS);  // spring_force_pipe's latency
+    localparam integer LS    = spring_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA);  // spring_force_pipe's latency
     localparam integer S     = K + LS + 4;                  // the sweep's cycles
     localparam integer TW    = $clog2(S + 1);
     localparam integer XW    = IW + 1;                      // a slot number, 0 .. K
@@ -163,7 +163,7 @@ module spring_stream #(
             wire             o_valid, o_ok;
             wire [DW-1:0]    o_f;
             wire [TAG_W-1:0] o_tag;
-            spring_force_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
+            spring_force_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(PIPE_STEPS), .DIM(DIM), .TAG_W(TAG_W),
                                 .BLOCK_MIN(RAM_BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(slot),
                 .in_a(a_pos), .in_ap(a_prev), .in_b(b_pos), .in_bp(b_prev), .in_rest(rest_len),

@@ -48,7 +48,7 @@ PARAMS = [
     ("K",              "5",      "1", "4096", "body",        "nodes per unit (a graph: every node)"),
     ("SQRT_BITS",      "W - 1",  "1", "W - 1", "accuracy",   "square-root bits resolved, one per cycle"),
     ("DIV_BITS",       "W - 1",  "1", "W - 1", "accuracy",   "quotient bits resolved, one per cycle"),
-    ("MANTISSA",       "0",      "0", "20",   "accuracy",   "0: the full-width root and divide; 6 .. 20: the normalised distance datapath, the constraint computed on MANTISSA-bit mantissas that share one exponent (MANTISSA + 1-bit words: 17 makes every product one 18 x 18 multiplier)"),
+    ("MANTISSA",       "0",      "0", "20",   "accuracy",   "0: the full-width root and divide; 6 .. 20: the normalised distance datapath, a constraint's correction and a spring's length and direction computed on MANTISSA-bit mantissas that share one exponent (MANTISSA + 1-bit words: 17 makes every product of the ratio one 18 x 18 multiplier)"),
     ("PIPE_STEPS",     "2",      "1", "4",    "constraints", "ARCH = 1: root and divide iterations a pipeline stage in the distance and spring pipes (fx_sqrt_pipe, fx_div_pipe): fewer stages, so a shorter latency and fewer registers, for a longer path a stage"),
     ("ITER",           "1",      "1", "1024", "time",        "constraint passes per substep"),
     ("SUBSTEPS",       "1",      "1", "1024", "time",        "substeps per frame"),
@@ -76,7 +76,7 @@ PARAMS = [
 ONLY = {
     "SQRT_BITS": "EN_CONSTRAINTS || EN_SPRINGS",
     "DIV_BITS": "EN_CONSTRAINTS || EN_SPRINGS",
-    "MANTISSA": "EN_CONSTRAINTS",
+    "MANTISSA": "EN_CONSTRAINTS || EN_SPRINGS",
     "PIPE_STEPS": "ARCH",
     "ITER": "EN_CONSTRAINTS",
     "GRAB": "EN_MOUSE",

@@ -105,7 +105,7 @@ def random_build(rng, plan=None):
     # the distance datapath: the full-width root and divide (0) or the normalised one's mantissa bits;
     # drawn likewise from the build (projection = previous runs the full-width one only)
     mb = random.Random("mantissa " + repr(sorted(b.items()))).choice([0, 0, 6, 8, 11, 14, 17, 17, 20])
-    b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if b["EN_CONSTRAINTS"] and not b["PROJECTION"] else 0
+    b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if (b["EN_CONSTRAINTS"] or b["EN_SPRINGS"]) and not b["PROJECTION"] else 0
     return b
 
 
@@ -152,6 +152,7 @@ CLASSES = [
     ("mantissa serial", "the normalised distance datapath (MANTISSA > 0) on a chain's serial pass"),
     ("mantissa pipelined", "the normalised distance datapath on a chain's pipelined pass"),
     ("mantissa graph", "the normalised distance datapath on a graph's rods"),
+    ("mantissa springs", "a spring's length and direction on the normalised datapath"),
     ("graph order serial", "a graph's rods in the scene's order (the serial pass, ARCH = 0)"),
     ("graph order redblack", "a graph's rods by colour on the pipelined pass (graph_stream, ARCH = 1)"),
     ("graph colours>1", "a pipelined graph whose rods take several colours (drains between them)"),
@@ -385,6 +386,8 @@ def classes_of(p, facts, resets=0):
         c.add("previous pipelined" if p["ARCH"] else "previous serial")
     if not rods:
         c.add("no constraints")
+    if p["EN_SPRINGS"] and p["MANTISSA"]:
+        c.add("mantissa springs")
     if p["EN_GROUND"]:
         c.add("ground " + "xyz"[p["GROUND_AXIS"]])
         c.add("ground above" if p["GROUND_ABOVE"] else "ground below")

@@ -480,11 +480,17 @@ static void vec_toward(const fx_t p[3], const fx_t c[3], fx_t rest, int excess)
         if (p[k] < fx_min(&fmt) || p[k] > fx_max(&fmt) || c[k] < fx_min(&fmt) || c[k] > fx_max(&fmt))
             die("toward: an input outside the format");
     count_radicand(p, c);
-    /* composed in rtl/toward.v's order */
+    /* composed in rtl/toward.v's order: t = d r, or with a mantissa fx_along's t */
     for (int k = 0; k < dim; k++) d[k] = fx_sub(&fmt, c[k], p[k]);
-    fx_t r = fx_div(&fmt, (uint32_t)rest, (uint32_t)fx_sqrt(&fmt, fx_sumsq(d[0], d[1], d[2])), &dz);
+    fx_t tv[3];
+    if (fmt.mantissa) {
+        dz = !fx_along(&fmt, dim, d, rest, tv);
+    } else {
+        fx_t r = fx_div(&fmt, (uint32_t)rest, (uint32_t)fx_sqrt(&fmt, fx_sumsq(d[0], d[1], d[2])), &dz);
+        for (int k = 0; k < dim; k++) tv[k] = fx_mul(&fmt, d[k], r);
+    }
     for (int k = 0; k < dim; k++)
-        comp[k] = excess ? fx_sub(&fmt, d[k], fx_mul(&fmt, d[k], r)) : fx_add(&fmt, p[k], fx_mul(&fmt, d[k], r));
+        comp[k] = excess ? fx_sub(&fmt, d[k], tv[k]) : fx_add(&fmt, p[k], tv[k]);
     /* the engine */
     if (!excess) {
         dp_pinned[0] = dp_pinned[1] = false;
@@ -773,8 +779,8 @@ static void gen_spring(void)
 
 int main(int argc, char **argv)
 {
-    if (argc < 7 || argc > 10)
-        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS [DIM [STEPS]]] OUT.hex");
+    if (argc < 7 || argc > 11)
+        die("usage: gen_vectors add|mul|avg|sqrt|div|toward|toward_pipe|spring|spring_pipe exhaustive|random W F BITS [DIV_BITS [DIM [STEPS [MANTISSA]]]] OUT.hex");
     const char *unit = argv[1];
     const int datapath = !strcmp(unit, "toward") || !strcmp(unit, "toward_pipe") || !strcmp(unit, "spring") || !strcmp(unit, "spring_pipe");
     if (argc >= 8 && !datapath) die("SQRT_BITS and DIV_BITS apart are for toward and spring");
@@ -789,7 +795,8 @@ int main(int argc, char **argv)
 #ifdef GEN_DATAPATHS
     if (argc >= 9) dim = atoi(argv[7]);
     if (dim != 2 && dim != 3) die("DIM must be 2 or 3");
-    if (argc == 10) pipe_steps = atoi(argv[8]);
+    if (argc >= 10) pipe_steps = atoi(argv[8]);
+    if (argc == 11) fmt.mantissa = atoi(argv[9]);
     if (pipe_steps < 1 || pipe_steps > 4) die("STEPS must be 1..4");
 #endif
     const char *bad = fx_format_check(&fmt);
@@ -817,6 +824,7 @@ int main(int argc, char **argv)
         hp.sqrt_bits = fmt.sqrt_bits;
         hp.div_bits = fmt.div_bits;
         hp.pipe_steps = pipe_steps; /* the pipes' root and divide iterations a stage */
+        hp.mantissa = fmt.mantissa;
         char path[1024];
         snprintf(path, sizeof path, "%s.latency", argv[argc - 1]);
         FILE *lf = fopen(path, "w");

@@ -37,6 +37,7 @@ module tb_spring_force;
     parameter integer F         = 16;      // fraction bits under test
     parameter integer SQRT_BITS = W - 1;   // root bits resolved under test
     parameter integer DIV_BITS  = W - 1;   // quotient bits resolved under test
+    parameter integer MANTISSA  = 0;       // 0: the full-width datapath; else the normalised one
     parameter integer DIM       = 2;       // 2, or 3: the z lane
     parameter integer MAXN      = 1 << 14; // capacity of the vector memory
 
@@ -83,9 +84,9 @@ module tb_spring_force;
             assign f_z = {W{1'b0}};
         end
     endgenerate
-    spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) dut (
+    spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .DIM(DIM)) dut (
         .clk(clk), .reset(reset), .start(start),
-        .a(a3[DIM*W-1:0]), .a_p(ap3[DIM*W-1:0]), .b(b3[DIM*W-1:0]), .b_p(bp3[DIM*W-1:0]),
+        .pos_a(a3[DIM*W-1:0]), .prev_a(ap3[DIM*W-1:0]), .pos_b(b3[DIM*W-1:0]), .prev_b(bp3[DIM*W-1:0]),
         .rest_len(in[12]), .ks(in[13]), .kd(in[14]),
         .busy(busy), .done(done), .f(f_bus), .valid(valid));
 

@@ -23,6 +23,7 @@ module tb_spring_force_pipe;
     parameter integer F         = 16;
     parameter integer SQRT_BITS = W - 1;
     parameter integer DIV_BITS  = W - 1;
+    parameter integer MANTISSA  = 0;       // 0: the full-width datapath; else the normalised one
     parameter integer STEPS     = 1;       // the root's and divider's iterations a stage
     parameter integer DIM       = 2;
     parameter integer MAXN      = 1 << 14;
@@ -67,7 +68,7 @@ module tb_spring_force_pipe;
     // what went in, by cycle: the vector number (-1: none)
     integer          sent [0:HIST-1];
 
-    spring_force_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W)) dut (
+    spring_force_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W)) dut (
         .clk(clk), .reset(reset), .in_valid(in_valid),
         .in_a(a3[DIM*W-1:0]), .in_ap(ap3[DIM*W-1:0]), .in_b(b3[DIM*W-1:0]), .in_bp(bp3[DIM*W-1:0]),
         .in_rest(in_i[12]), .in_ks(in_i[13]), .in_kd(in_i[14]), .in_tag(tag),

@@ -39,6 +39,7 @@ module tb_toward;
     parameter integer F         = 16;      // fraction bits under test
     parameter integer SQRT_BITS = W - 1;   // root bits resolved under test
     parameter integer DIV_BITS  = W - 1;   // quotient bits resolved under test
+    parameter integer MANTISSA  = 0;       // 0: the full-width datapath; else the normalised one
     parameter integer DIM       = 2;       // 2, or 3: the z lane
     parameter integer MAXN      = 1 << 14; // capacity of the vector memory
 
@@ -83,7 +84,7 @@ module tb_toward;
             assign t_z = {W{1'b0}};
         end
     endgenerate
-    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) dut (
+    toward #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .DIM(DIM)) dut (
         .clk(clk), .reset(reset), .start(start), .excess(excess),
         .p(p3[DIM*W-1:0]), .c(c3[DIM*W-1:0]), .rest_len(rest_len),
         .busy(busy), .done(done), .t(t_bus), .valid(valid));

@@ -25,6 +25,7 @@ module tb_toward_pipe;
     parameter integer F         = 16;
     parameter integer SQRT_BITS = W - 1;
     parameter integer DIV_BITS  = W - 1;
+    parameter integer MANTISSA  = 0;       // 0: the full-width datapath; else the normalised one
     parameter integer STEPS     = 1;       // the root's and divider's iterations a stage
     parameter integer DIM       = 2;
     parameter integer MAXN      = 1 << 14;
@@ -71,7 +72,7 @@ module tb_toward_pipe;
     // what went in, by cycle: valid and vector number (-1: none)
     integer          sent [0:HIST-1];
 
-    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W), .CARRY(1'b1)) dut (
+    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W), .CARRY(1'b1)) dut (
         .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
         .in_p(p3[DIM*W-1:0]), .in_c(c3[DIM*W-1:0]), .in_rest(rest), .in_tag(tag),
         .out_valid(out_valid), .out_t(t_bus), .out_ok(out_ok), .out_tag(out_tag),

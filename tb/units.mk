@@ -108,7 +108,7 @@ UNITS_ICARUS_TESTS := \
     fx_div_pipe_w32_f16_b31_s2_random:div_pipe:random:32:16:31:2 \
     fx_div_pipe_w32_f16_b30_s4_random:div_pipe:random:32:16:30:4
 
-# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM[:STEPS] (module is toward,
+# Datapath configurations: name:module:W:F:SQRT_BITS:DIV_BITS:DIM[:STEPS[:MANTISSA]] (module is toward,
 # toward_pipe, spring_force or spring_force_pipe; its testbench is tb/tb_<module>.v; DIM 2 or 3: in 3D the
 # radicand, a sum of three squares, reaches classes a sum of two never does).
 UNITS_DP_TESTS := \
@@ -130,7 +130,13 @@ UNITS_DP_TESTS := \
     spring_force_pipe_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:2 \
     spring_force_pipe_w12_f6_s8_d9:spring_force_pipe:12:6:8:9:2 \
     spring_force_pipe_3d_w32_f16_s31_d31:spring_force_pipe:32:16:31:31:3 \
-    spring_force_pipe_w32_f16_s31_d31_x2:spring_force_pipe:32:16:31:31:2:2
+    spring_force_pipe_w32_f16_s31_d31_x2:spring_force_pipe:32:16:31:31:2:2 \
+    toward_w32_f16_m17:toward:32:16:31:31:2:1:17 \
+    toward_pipe_w32_f16_m17:toward_pipe:32:16:31:31:2:1:17 \
+    toward_pipe_3d_w18_f8_m8:toward_pipe:18:8:17:17:3:1:8 \
+    spring_force_3d_w24_f12_m14:spring_force:24:12:23:23:3:1:14 \
+    spring_force_pipe_w32_f16_m17:spring_force_pipe:32:16:31:31:2:1:17 \
+    spring_force_pipe_3d_w18_f8_m11:spring_force_pipe:18:8:17:17:3:1:11
 
 # Testbench parameters per unit: $(call UNITS_PARAMS_<unit>,W,F,BITS).
 UNITS_PARAMS_add  = -Ptb_fx_add.W=$(1)
@@ -235,8 +241,11 @@ UNITS_DP_GEN_spring_force := spring
 UNITS_DP_GEN_toward_pipe  := toward_pipe
 UNITS_DP_GEN_spring_force_pipe := spring_pipe
 # what a datapath needs beyond the arithmetic units
-UNITS_DP_DEPS_toward_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram
-UNITS_DP_DEPS_spring_force_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram
+UNITS_DP_DEPS_toward_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram fx_along_pipe fx_shr
+UNITS_DP_DEPS_spring_force_pipe := fx_sqrt_pipe fx_div_pipe fx_mul_pipe delay_line strand_ram fx_along_pipe fx_shr
+# the serial datapaths run the pipes one operation at a time when MANTISSA > 0
+UNITS_DP_DEPS_toward := toward_pipe $(UNITS_DP_DEPS_toward_pipe)
+UNITS_DP_DEPS_spring_force := spring_force_pipe $(UNITS_DP_DEPS_spring_force_pipe)
 
 # The generator with the frame engine: the expected values come from its own code.
 $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/model/timing.c $(UNITS_PARAMS_H)
@@ -246,15 +255,15 @@ $(UNITS_GEN_DP): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_DP_MODEL) $(UNITS_ROOT)/
 
 # One datapath test: vectors (cached), simulator (cached), and a run (always).
 # $(1) name, $(2) module, $(3) W, $(4) F, $(5) SQRT_BITS, $(6) DIV_BITS, $(7) DIM, $(8) STEPS (may be
-# empty: 1; the pipes only)
+# empty: 1; the pipes only), $(9) MANTISSA (may be empty: 0)
 define UNITS_DP_RULE
 $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $(8) $$@ > $$@.n
+	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $(8) $(9) $$@ > $$@.n
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(8),-Ptb_$(2).STEPS=$(8)) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(and $(8),$(filter %_pipe,$(2))),-Ptb_$(2).STEPS=$(8)) $(if $(9),-Ptb_$(2).MANTISSA=$(9)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -263,7 +272,7 @@ units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
 units-datapaths: units-run-$(1)
 endef
 
-$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))),$(word 8,$(subst :, ,$(t))))))
+$(foreach t,$(UNITS_DP_TESTS),$(eval $(call UNITS_DP_RULE,$(word 1,$(subst :, ,$(t))),$(word 2,$(subst :, ,$(t))),$(word 3,$(subst :, ,$(t))),$(word 4,$(subst :, ,$(t))),$(word 5,$(subst :, ,$(t))),$(word 6,$(subst :, ,$(t))),$(word 7,$(subst :, ,$(t))),$(word 8,$(subst :, ,$(t))),$(word 9,$(subst :, ,$(t))))))
 
 # Every configuration's vectors (make mutate runs the benches on mutated copies of the RTL).
 units-vectors: $(foreach t,$(UNITS_ICARUS_TESTS) $(UNITS_DP_TESTS),$(UNITS_BUILD)/$(word 1,$(subst :, ,$(t)))/vectors.hex)
@@ -337,7 +346,7 @@ UNITS_LINT_PARAMS_sqrt_pipe := $(UNITS_LINT_PARAMS_sqrt)
 UNITS_LINT_PARAMS_div_pipe  := $(UNITS_LINT_PARAMS_div)
 # the datapath testbenches (with the RTL under them), Verilator with --timing
 UNITS_LINT_PARAMS_DP   := "" "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9" "-GW=8 -GF=1 -GSQRT_BITS=1 -GDIV_BITS=1" "-GDIM=3" \
-                          "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9 -GDIM=3"
+                          "-GW=12 -GF=6 -GSQRT_BITS=8 -GDIV_BITS=9 -GDIM=3" "-GMANTISSA=17" "-GW=12 -GF=6 -GDIM=3 -GMANTISSA=8"
 
 lint-units:
 	@set -e; cd $(UNITS_ROOT); \

@@ -446,6 +446,45 @@ static void test_along_error_bound(void **state)
     assert_true(t[0] == 0 && t[1] == 0 && t[2] == 0);
 }
 
+/* fx_spring_dir: u is fx_along's vector of length 2^(W-2) along d, len the exact d . u rounded by
+   W - 2 bits (checked bit for bit in long double), within 6 2^-MB |d| + 1 LSB of |d|; no
+   direction for d = 0. */
+static void test_spring_dir(void **state)
+{
+    static const int cfg[][2] = {{32, 17}, {32, 8}, {24, 14}, {18, 11}, {12, 6}};
+    (void)state;
+    for (size_t c = 0; c < sizeof cfg / sizeof cfg[0]; c++) {
+        fx_format fmt = {cfg[c][0], cfg[c][0] / 2, cfg[c][0] - 1, cfg[c][0] - 1, cfg[c][1]};
+        const int w = fmt.width, mb = fmt.mantissa;
+        for (int i = 0; i < 20000; i++) {
+            int dim = 2 + (i & 1);
+            fx_t d[3] = {0, 0, 0}, u[3], want[3], len;
+            long double dd = 0, dot = 0;
+            for (int k = 0; k < dim; k++) {
+                d[k] = fx_sat(&fmt, rnd_fx(&fmt)) >> (rnd() % 3 == 0 ? rnd() % w : 0);
+                dd += (long double)d[k] * d[k];
+            }
+            bool ok = fx_spring_dir(&fmt, dim, d, &len, u);
+            bool along = fx_along(&fmt, dim, d, (fx_t)(INT64_C(1) << (w - 2)), want);
+            if (dd == 0) {
+                assert_false(ok);
+                continue;
+            }
+            for (int k = 0; k < dim; k++) {
+                if (u[k] != want[k]) fail_msg("W=%d MB=%d: u is not fx_along's vector of length 2^(W-2)", w, mb);
+                dot += (long double)d[k] * u[k];
+            }
+            assert_true(along);
+            long double ref = sat_ref(&fmt, nearbyintl(ldexpl(dot, -(w - 2))));
+            if (ok != (ref > 0) || (ok && len != ref))
+                fail_msg("W=%d MB=%d d=(%d, %d, %d): len %d, d . u rounded is %.0Lf", w, mb, d[0], d[1], d[2], len, ref);
+            long double mag = fminl(sqrtl(dd), (long double)fx_max(&fmt));   /* a length past the range saturates */
+            if (ok && fabsl(len - mag) > 6 * ldexpl(mag, -mb) + 1)
+                fail_msg("W=%d MB=%d d=(%d, %d, %d): len %d, |d| %.3Lf", w, mb, d[0], d[1], d[2], len, sqrtl(dd));
+        }
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -466,6 +505,7 @@ int main(void)
         cmocka_unit_test(test_along_w8_exhaustive),
         cmocka_unit_test(test_along_random_and_edges),
         cmocka_unit_test(test_along_error_bound),
+        cmocka_unit_test(test_spring_dir),
     };
     fesetround(FE_TONEAREST);
     return cmocka_run_group_tests_name("fixed-point arithmetic", tests, NULL, NULL);

@@ -122,7 +122,7 @@ module spring_hs #(
     wire busy, done, valid;
     wire [DIM*W-1:0] f;
     spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) dut (
-        .clk(clk), .reset(reset), .start(start), .a(a), .a_p(a_p), .b(b), .b_p(b_p),
+        .clk(clk), .reset(reset), .start(start), .pos_a(a), .prev_a(a_p), .pos_b(b), .prev_b(b_p),
         .rest_len(rest_len), .ks(ks), .kd(kd), .busy(busy), .done(done), .f(f), .valid(valid));
     serial_hs_check #(.LAT(LAT)) chk (.clk(clk), .reset(reset), .start(start), .busy(busy), .done(done));
     wire unused = &{1'b0, f, valid};
@@ -165,7 +165,7 @@ module spring_miter #(
     wire [DIM*W-1:0] f, out_f;
     wire [0:0] out_tag;
     spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_serial (
-        .clk(clk), .reset(reset), .start(start), .a(op_a), .a_p(op_ap), .b(op_b), .b_p(op_bp),
+        .clk(clk), .reset(reset), .start(start), .pos_a(op_a), .prev_a(op_ap), .pos_b(op_b), .prev_b(op_bp),
         .rest_len(op_rest), .ks(op_ks), .kd(op_kd), .busy(busy), .done(done), .f(f), .valid(valid));
     spring_force_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM), .TAG_W(1)) u_pipe (
         .clk(clk), .reset(reset), .in_valid(start ? 1'b1 : in_valid),

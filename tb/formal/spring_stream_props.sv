@@ -41,7 +41,7 @@ module spring_stream_props #(
     localparam integer IW = K > 1 ? $clog2(K) : 1;
     localparam integer CW = $clog2(N + 1);
 `include "pipe_latency.vh"
-    localparam integer LS = spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);
+    localparam integer LS = spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, 0);
     localparam integer S  = K + LS + 4;
 
     (* anyconst *) reg [N*DW-1:0] pos_mem, prev_mem, acc_mem;

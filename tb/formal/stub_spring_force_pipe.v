@@ -13,6 +13,7 @@ module spring_force_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer MANTISSA  = 0,
     parameter integer STEPS     = 1,
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
@@ -35,7 +36,7 @@ module spring_force_pipe #(
     output wire [TAG_W-1:0] out_tag
 );
 `include "pipe_latency.vh"
-    localparam integer LATENCY = spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS);
+    localparam integer LATENCY = spring_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA);
     // delay lines as flat shift registers (no memories: the abc engines take no x bits)
     reg [LATENCY-1:0]         v_q, ok_q;
     reg [LATENCY*TAG_W-1:0]   tag_q;
