@@ -578,6 +578,8 @@ def find(results, scene, **kw):
             continue
         if p.get("reverse", False) != kw.get("reverse", False):  # and the run-back points
             continue
+        if (p.get("mantissa") or 0) != (kw.get("mantissa") or 0):  # and the normalised datapath's
+            continue
         if all(p.get(k) == v for k, v in kw.items()):
             out.append(r)
     return out
@@ -866,12 +868,13 @@ def order_section(A, results, claims):
 def mant_rows(results, msynth):
     """The mantissa table's rows: MB (0 first), its points' results and its 1x256 core's cells."""
     by_mb = {s["mantissa"]: s for s in msynth if "by_type" in s}
+    by_point = {json.dumps(r["point"], sort_keys=True): r for r in results}
     rows = []
     for mb in [0] + MANTISSAS:
-        kw = dict(mantissa=mb) if mb else {}
-        r = dict(mb=mb, cat=one(results, "catenary", **BASE, **kw), hang=one(results, "hanging", **kw),
-                 pend=one(results, "pendulum", **kw), energy=one(results, "energy", **kw),
-                 rope=one(results, "rope_rest", frames=200, **MANT_ROPE, **kw), cells=(by_mb.get(mb) or {}).get("by_type"))
+        # the exact points mantissa_points() made for this MB, in its order
+        cat, hang, pend, energy, rope = (by_point.get(json.dumps(p, sort_keys=True)) for p in mantissa_points([mb]))
+        r = dict(mb=mb, cat=cat, hang=hang, pend=pend, energy=energy, rope=rope,
+                 cells=(by_mb.get(mb) or {}).get("by_type"))
         if not all(r[k] and valid(r[k]) for k in ("cat", "hang", "pend", "energy", "rope")):
             continue
         rows.append(r)
@@ -879,10 +882,11 @@ def mant_rows(results, msynth):
 
 
 def mant_matches(r, full):
-    """Every error of row r within twice the full-width row's (the SQRT_BITS/DIV_BITS knees' rule)."""
+    """The catenary's errors and the hanging rope's stretch of row r within twice the full-width row's (the
+    SQRT_BITS/DIV_BITS knees' rule). The 1024-node rope's stretch is left out: it is the unconverged solver's
+    equilibrium, which rounding moves by an order of magnitude either way (the table shows it)."""
     pairs = [(cat_err(r["cat"]), cat_err(full["cat"])), (r["cat"]["err_rms"], full["cat"]["err_rms"]),
-             (get(r["hang"], "stretch_final_fx"), get(full["hang"], "stretch_final_fx")),
-             (get(r["rope"], "stretch_final_fx"), get(full["rope"], "stretch_final_fx"))]
+             (get(r["hang"], "stretch_final_fx"), get(full["hang"], "stretch_final_fx"))]
     return all(a is not None and b is not None and abs(a) <= 2 * abs(b) for a, b in pairs)
 
 
@@ -914,7 +918,7 @@ def mantissa_section(A, results, msynth, claims):
     full = rows[0]
     fm = {0: synth_fmax("1x256_pipe"), 17: synth_fmax(MANT_BUILD)}
     A("| MB | catenary: error | catenary: RMS vs double | hanging rope: stretch | pendulum: period error "
-      "| energy drift | 1024-node rope: largest / final stretch | logic (LUT4 + 2 CCU2C) | MULT18X18D | DP16KD "
+      "| energy drift | 1024-node rope: largest / final stretch (double: final) | logic (LUT4 + 2 CCU2C) | MULT18X18D | DP16KD "
       "| units that fit | updates/s at fmax (device bound) |")
     A("|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|--:|")
     out = []
@@ -933,7 +937,7 @@ def mantissa_section(A, results, msynth, claims):
         name = "full width" if r["mb"] == 0 else str(r["mb"])
         A(f"| {name} | {g(cat_err(r['cat']))} % | {g(r['cat']['err_rms'])} | {g(get(r['hang'], 'stretch_final_fx'))} % "
           f"| {g(get(r['pend'], 'check_fx.error_pct'))} % | {g(get(r['energy'], 'check_fx.error_pct'))} % "
-          f"| {g(get(rope, 'stretch_max_fx'))} / {g(get(rope, 'stretch_final_fx'))} % "
+          f"| {g(get(rope, 'stretch_max_fx'))} / {g(get(rope, 'stretch_final_fx'))} % ({g(get(rope, 'stretch_final_dbl'))} %) "
           f"| {fmt_int(logic)} | {fmt_int(mult if c else None)} | {fmt_int(bram if c else None)} | {fmt_int(fit)} | {rate} |")
         out.append(dict(mb=r["mb"], catenary=cat_err(r["cat"]), rms=r["cat"]["err_rms"],
                         hanging=get(r["hang"], "stretch_final_fx"), rope_final=get(rope, "stretch_final_fx"),
@@ -945,10 +949,19 @@ def mantissa_section(A, results, msynth, claims):
             break
         knee = r["mb"]
     if knee is not None:
-        A(f"**From MB = {knee} up, every error of the table is within twice the full-width datapath's** (the rule the "
-          "SQRT_BITS and DIV_BITS knees above use); below it at least one is not.")
+        A(f"**From MB = {knee} up, the catenary's error and RMS distance and the hanging rope's stretch are within "
+          "twice the full-width datapath's** (the rule the SQRT_BITS and DIV_BITS knees above use); below it at least "
+          "one is not.")
     else:
-        A("**No MB of the table keeps every error within twice the full-width datapath's.**")
+        A("**No MB of the table keeps the catenary's errors and the hanging rope's stretch within twice the "
+          "full-width datapath's.**")
+    A("")
+    A("The 1024-node rope's stretch is left out of that rule. Its 16 iterations a substep do not converge over "
+      "1,024 links, so the stretch is the equilibrium the unconverged solver settles at, and rounding moves that "
+      "equilibrium a long way: in double (the figure in brackets) the top links settle stretched in proportion to "
+      "the weight they hold, while fixed point settles far tighter at most MB and looser at some. Read "
+      "that column as the build's own figure, not as the mantissa's precision; the catenary and the hanging rope, "
+      "whose solvers converge, measure that.")
     A("")
     claims["mantissa_knee"] = knee
     claims["mantissa"] = out
