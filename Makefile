@@ -38,7 +38,7 @@ PREV_SCENES := $(wildcard tb/scenes/previous/*.scene)
 PREV_FRAMES := rope_centred:20 chain_pair_q16:8 graph3d_held:30   # Icarus frames of each
 # the normalised distance datapath ([format] mantissa > 0): in both orders, kept apart likewise
 MANT_SCENES := $(wildcard tb/scenes/mantissa/*.scene)
-MANT_FRAMES := chain_centred_q16:30 chain_pair_3d_mb8:60 graph3d_mb12:60 chain_springs_mb14:60   # Icarus frames of each
+MANT_FRAMES := chain_centred_q16:30 chain_pair_3d_mb8:60 graph3d_mb12:60 chain_springs_mb14:60 prev_rope_centred_mb17:12 prev_graph3d_mb10:30   # Icarus frames of each
 # The Icarus frame bench runs the default scene's first 60 frames (its 240 serial frames are 742k
 # cycles, a minute of Icarus); lockstep runs all of them under Verilator.
 REF000_BENCH_FRAMES := 60

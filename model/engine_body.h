@@ -15,6 +15,8 @@
  *   LEG(h, d, miss)        sqrt(h^2 - |d|^2) (fixed: fx_sqrt of the exact difference); *miss if |d| > h
  *   ALONG(d, rest, t)      t = d rest / |d|, the vector of length rest along d; false when |d| = 0
  *                          (fixed: fx_mul(d, fx_div(rest, LEN(d))), or with a mantissa fx_along)
+ *   UNITDIR(r, u)          u = r / |r| with W-2 fraction bits (fixed: UNIT of LEN(r), or with a mantissa
+ *                          fx_along(r, 2^(W-2))); false when |r| = 0
  *   SPRING_DIR(d, len, u)  a spring's length |d| and unit vector u = d / |d|; false when |d| = 0
  *                          (fixed: LEN and SDIV, u in Q.F; with a mantissa fx_spring_dir, u in Q2.(W-2))
  *   DIRMUL(a, u)           a times a component of SPRING_DIR's u (MUL, or with a mantissa UMUL)
@@ -220,18 +222,14 @@ void P(mouse_node)(SIM *s, int i)
 static bool P(along_previous)(SIM *s, const NUM q[3], int from, int to, NUM rest, NUM out[3])
 {
     NUM r[3] = {FROM(0), FROM(0), FROM(0)}, u[3] = {FROM(0), FROM(0), FROM(0)}, p[3] = {FROM(0), FROM(0), FROM(0)};
-    NUM len, dot = FROM(0), leg;
-    bool zero, miss;
+    NUM dot = FROM(0), leg;
+    bool miss;
     for (int k = 0; k < s->dim; k++) r[k] = SUB(s->prev[to][k], s->prev[from][k]);
-    len = LEN(r);
-    if (!LESS(FROM(0), len)) {
+    if (!UNITDIR(r, u)) {
         s->fallbacks++;
         return false;
     }
-    for (int k = 0; k < s->dim; k++) {
-        u[k] = UNIT(r[k], len, &zero);
-        dot = ADD(dot, UMUL(q[k], u[k]));
-    }
+    for (int k = 0; k < s->dim; k++) dot = ADD(dot, UMUL(q[k], u[k]));
     for (int k = 0; k < s->dim; k++) p[k] = SUB(q[k], UMUL(dot, u[k]));
     leg = LEG(rest, p, &miss);
     if (miss) {

@@ -40,6 +40,7 @@ static inline double dbl_leg(double h, const double d[3], bool *miss)
 #define ALONG(d, rest, t) dbl_along((d), (rest), (t))
 #define SPRING_DIR(d, len, u) dbl_spring_dir((d), (len), (u))
 #define DIRMUL(a, u) ((a) * (u))
+#define UNITDIR(r, u) dbl_unit_dir((r), (u))
 
 /* t = d (rest / |d|), false when |d| = 0 */
 static inline bool dbl_along(const double d[3], double rest, double t[3])
@@ -59,6 +60,13 @@ static inline bool dbl_spring_dir(const double d[3], double *len, double u[3])
     if (!(*len > 0)) return false;
     for (int k = 0; k < 3; k++) u[k] = dbl_div(d[k], *len, &zero);
     return true;
+}
+
+/* r / |r|, false when |r| = 0 */
+static inline bool dbl_unit_dir(const double r[3], double u[3])
+{
+    double len;
+    return dbl_spring_dir(r, &len, u);
 }
 
 #include "engine_body.h"

@@ -26,6 +26,7 @@
 #define MAC2(a, b, c, d) fx_mac2(F_, (a), (b), (c), (d))
 #define ALONG(d, rest, t) along(s, (d), (rest), (t))
 #define SPRING_DIR(d, len, u) spring_dir(s, (d), (len), (u))
+#define UNITDIR(r, u) unit_dir(s, (r), (u))
 #define DIRMUL(a, u) (s->fmt.mantissa ? fx_mul_unit(F_, (a), (u)) : fx_mul(F_, (a), (u)))
 
 /* t = d rest / |d|: the full-width root, divide and products, or the normalised datapath */
@@ -37,6 +38,19 @@ static bool along(const sim_fx *s, const fx_t d[3], fx_t rest, fx_t t[3])
     ratio = DIV(rest, LEN(d), &zero);
     for (int k = 0; k < 3; k++) t[k] = k < s->dim ? MUL(d[k], ratio) : 0;
     return !zero;
+}
+
+/* the unit vector along r in Q2.(W-2): the full-width root and unit divides, or fx_along of length 2^(W-2) */
+static bool unit_dir(const sim_fx *s, const fx_t r[3], fx_t u[3])
+{
+    bool zero;
+    fx_t len;
+    if (s->fmt.mantissa) return fx_along(&s->fmt, s->dim, r, (fx_t)(INT64_C(1) << (s->fmt.width - 2)), u);
+    len = LEN(r);
+    for (int k = 0; k < 3; k++) u[k] = 0;
+    if (!(len > 0)) return false;
+    for (int k = 0; k < s->dim; k++) u[k] = UNIT(r[k], len, &zero);
+    return true;
 }
 
 /* a spring's length and unit vector: the full-width root and divides (u in Q.F), or fx_spring_dir */

@@ -161,7 +161,7 @@ fx_t fx_unit_div(const fx_format *fmt, fx_t num, fx_t den, bool *div_by_zero);
  * saturated): the centred rule's target is P + t, the pairwise rule's excess d - t. It
  * returns false when d = 0 (no direction: the caller skips the correction), as the full-
  * width datapath's divide-by-zero flag does. Every step is an integer operation the RTL
- * mirrors (rtl/fx_norm.v, fx_rsqrt.v, fx_denorm.v inside toward_pipe); "round" is ties to
+ * mirrors (rtl/fx_along_pipe.v, in toward_pipe, toward_prev_pipe and spring_force_pipe); "round" is ties to
  * even, "clamp" keeps an unsigned mantissa below 2^MB:
  *
  *  1. normalise (fx_norm_lanes): L = the leading bit of |d.x| | |d.y| | |d.z|, s = L - (MB-1),

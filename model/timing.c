@@ -14,7 +14,8 @@ long hw_along_pipe_latency(const hw_params *hp)
 
 long hw_toward_latency(const hw_params *hp)
 {
-    if (hp->mantissa) /* toward.v: one operation through toward_pipe, done the cycle after its result */
+    if (hp->mantissa) /* toward.v (toward_prev.v): one operation through toward_pipe (toward_prev_pipe), done the
+                         cycle after its result */
         return hw_toward_pipe_latency(hp) + 1;
     if (hp->projection) /* toward_prev.v: the root of r.r, DIM unit divides, three phases of DIM products
                            (each used 3 cycles after its issue), p.p and rest^2, the leg's root, the last
@@ -40,6 +41,9 @@ long hw_div_pipe_latency(const hw_params *hp)
 
 long hw_toward_pipe_latency(const hw_params *hp)
 {
+    if (hp->projection && hp->mantissa) /* toward_prev_pipe.v: q and r, u from fx_along_pipe, then as below from
+                                           T_U: q.u, s u and p, p.p and rest^2, the leg's root, leg u, o, T, out */
+        return hw_along_pipe_latency(hp) + hw_sqrt_pipe_latency(hp) + 23;
     if (hp->mantissa) /* toward_pipe.v: d, fx_along_pipe, T, the output register */
         return hw_along_pipe_latency(hp) + 3;
     if (hp->projection) /* toward_prev_pipe.v: q and r, r's squares and their sum, the root, the DIM unit
@@ -185,7 +189,8 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                  hp->arch ? "5" : "4");
     if (hp->arch && hp->en_constraints)
         snprintf(pipe, sizeof pipe, "%s latency LP = %s = %ld%s\n", hp->projection ? "toward_prev_pipe" : "toward_pipe",
-                 hp->projection ? "2 LSQ + LDV + 28" : hp->mantissa ? "LA + 3 (LA = fx_along_pipe's 21)" : "LSQ + LDV + 11",
+                 hp->projection ? (hp->mantissa ? "LA + LSQ + 23 (LA = fx_along_pipe's 21)" : "2 LSQ + LDV + 28")
+                 : hp->mantissa ? "LA + 3 (LA = fx_along_pipe's 21)" : "LSQ + LDV + 11",
                  hw_toward_pipe_latency(hp), hp->mantissa ? "" : steps);
     return snprintf(out, (size_t)len,
                     "%s latency LT = %s = %ld\n"
@@ -196,8 +201,9 @@ int hw_timing_text(const hw_params *hp, char *out, int len)
                     "substep = %s%s [+ spring pass] [+ ground %s + %s] = %ld\n"
                     "frame = SUBSTEPS substeps + 1 [+ grab scan N + 1] = %ld cycles\n",
                     hp->projection ? "toward_prev" : "toward",
-                    hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20"
-                    : hp->mantissa ? "toward_pipe's LA + 3, + 1 (MANTISSA > 0)" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
+                    hp->mantissa ? (hp->projection ? "toward_prev_pipe's LA + LSQ + 23, + 1 (MANTISSA > 0)"
+                                                   : "toward_pipe's LA + 3, + 1 (MANTISSA > 0)")
+                    : hp->projection ? "2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20" : "SQRT_BITS + DIV_BITS + 2 DIM + 10",
                     hw_toward_latency(hp),
                     hp->mantissa ? "spring_force_pipe's LA + 15, + 1 (MANTISSA > 0)" : "SQRT_BITS + DIM DIV_BITS + 5 DIM + 15",
                     hw_spring_latency(hp), pipe,

@@ -112,7 +112,7 @@ module chain_sequencer #(
     // busy is not needed: the FSM waits for done
     generate
         if (PROJECTION) begin : g_previous
-            toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+            toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .DIM(DIM)) u_toward (
                 .clk(clk), .reset(reset), .start(t_start), .excess(1'b0),
                 .p(from_u ? u_pos : d_pos), .c(c_pos), .pp(from_u ? u_prev : d_prev), .pc(c_prev),
                 .rest_len(rest_len), .busy(), .done(t_done), .t(t_pos), .valid(t_valid));

@@ -120,7 +120,7 @@ module chain_stream #(
     localparam integer DW     = DIM * W;
     localparam integer NB     = 2 * DW + 2;                    // a node's bundle: {held, pin, prev, pos}
 `include "pipe_latency.vh"
-    localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS)
+    localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA)
                                            : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA);
     localparam integer PJ     = (K + 1) / 2;                   // pairs read a sweep
     localparam integer NS     = K / 2 + 1;                     // slots a sweep

@@ -10,7 +10,7 @@
  * (pipe_latency.vh, model/timing.c hw_toward_pipe_latency; LSQ and LDV the root's and the
  * dividers' latencies, SQRT_BITS + 2 and DIV_BITS + 2 with STEPS = 1):
  *     toward_pipe       LSQ + LDV + 11       (STEPS = 1: SQRT_BITS + DIV_BITS + 15); 24 with MANTISSA
- *     toward_prev_pipe  2 LSQ + LDV + 28     (STEPS = 1: 2 SQRT_BITS + DIV_BITS + 34)
+ *     toward_prev_pipe  2 LSQ + LDV + 28     (STEPS = 1: 2 SQRT_BITS + DIV_BITS + 34); LSQ + 44 with MANTISSA
  * The ports are toward_prev_pipe's; without PROJECTION the previous positions (in_pp,
  * in_pc) are not used. See those two modules for the arithmetic.
  */
@@ -48,7 +48,7 @@ module dist_pipe #(
 
     generate
         if (PROJECTION) begin : g_previous
-            toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
+            toward_prev_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(STEPS), .DIM(DIM), .TAG_W(TAG_W),
                                .CARRY(CARRY), .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_pipe (
                 .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
                 .in_p(in_p), .in_c(in_c), .in_pp(in_pp), .in_pc(in_pc), .in_rest(in_rest), .in_tag(in_tag),

@@ -120,11 +120,11 @@ module fx_along_pipe #(
 
     // ---- 2: the leading ones (L of the lanes; Lr of rest, 0 for rest <= 1) and d = 0 ----
     function [LB-1:0] lead(input [W-1:0] v);
-        integer b;
+        integer i;
         begin
             lead = {LB{1'b0}};
-            for (b = 0; b < W; b = b + 1)
-                if (v[b]) lead = b[LB-1:0];
+            for (i = 0; i < W; i = i + 1)
+                if (v[i]) lead = i[LB-1:0];
         end
     endfunction
     reg [DIM*W-1:0] d_2;

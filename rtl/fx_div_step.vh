@@ -3,17 +3,17 @@
 // their bodies, after their localparams W, DB, NIT, LSB; fx_div.v's header has the
 // algorithm).
 
-// One iteration: {the new quotient bit, the new partial remainder}: t = 2 acc + the next
-// dividend bit, the bit is t >= divisor (acc < divisor holds, so the new acc fits W bits).
+// One iteration: {the new quotient bit, the new partial remainder}: twice = 2 acc + the next
+// dividend bit, the bit is twice >= divisor (acc < divisor holds, so the new acc fits W bits).
 function [W:0] div_step(input [W-1:0] acc, input xbit, input [W-1:0] divisor);
-    reg [W:0]   t;
+    reg [W:0]   twice;
     reg [W+1:0] diff;
     reg         ge;
     begin
-        t        = {acc, xbit};
-        diff     = {1'b0, t} - {2'b00, divisor};
+        twice    = {acc, xbit};
+        diff     = {1'b0, twice} - {2'b00, divisor};
         ge       = !diff[W+1];
-        div_step = {ge, ge ? diff[W-1:0] : t[W-1:0]};
+        div_step = {ge, ge ? diff[W-1:0] : twice[W-1:0]};
     end
 endfunction
 

@@ -9,14 +9,14 @@
 
 function [2*MB-1:0] rsqrt_seed_word(input integer idx);
     reg [63:0] ix, n, z, r, tr, y, cube, c, rem, half;
-    integer    b;
+    integer    i;
     begin
         ix = {32'd0, idx};
         n  = ((64'd1 << T) + 2 * (ix % (64'd1 << (T - 1))) + 64'd1) << (ix / (64'd1 << (T - 1)));
         z = (64'd1 << (2 * MB + T + 2)) / n;
         r = 64'd0;
-        for (b = 31; b >= 0; b = b - 1) begin
-            tr = r | (64'd1 << b);
+        for (i = 31; i >= 0; i = i - 1) begin
+            tr = r | (64'd1 << i);
             if (tr * tr <= z) r = tr;
         end
         y    = (r + 64'd1) >> 1;

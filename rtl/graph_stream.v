@@ -74,7 +74,7 @@ module graph_stream #(
     localparam integer DW     = DIM * W;
     localparam integer E      = E_RODS;
 `include "pipe_latency.vh"
-    localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS)
+    localparam integer LT     = PROJECTION ? toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA)
                                            : toward_pipe_latency(SQRT_BITS, DIV_BITS, PIPE_STEPS, MANTISSA);
     localparam integer EW     = E > 1 ? $clog2(E) : 1;       // an edge index
     localparam integer ITW    = ITER > 1 ? $clog2(ITER) : 1;

@@ -191,7 +191,7 @@ module pair_sequencer #(
             // busy is not needed: the FSM waits for done
             if (PROJECTION) begin : g_previous
                 // projection = previous: the excess along the direction at the substep's start
-                toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) u_toward (
+                toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .DIM(DIM)) u_toward (
                     .clk(clk), .reset(reset), .start(state_q == S_GO), .excess(1'b1),
                     .p(a_pos), .c(rd_pos), .pp(a_prev), .pc(rd_prev), .rest_len(link_rest),  // b arrives as it starts
                     .busy(), .done(t_done), .t(excess), .valid(t_valid));

@@ -28,8 +28,10 @@ function integer toward_pipe_latency(input integer sqrt_bits, input integer div_
                                        : sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 11;
 endfunction
 
-function integer toward_prev_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps);
-    toward_prev_pipe_latency = 2 * sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 28;
+function integer toward_prev_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps,
+                                          input integer mantissa);
+    toward_prev_pipe_latency = mantissa > 0 ? along_pipe_latency(mantissa) + sqrt_pipe_latency(sqrt_bits, steps) + 23
+                                            : 2 * sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 28;
 endfunction
 
 function integer spring_pipe_latency(input integer sqrt_bits, input integer div_bits, input integer steps,

@@ -46,6 +46,7 @@ module toward_prev_pipe #(
     parameter integer F         = 16,
     parameter integer SQRT_BITS = W - 1,
     parameter integer DIV_BITS  = W - 1,
+    parameter integer MANTISSA  = 0,      // 0: the full-width root and unit divides; 6 .. 20: fx_along_pipe for u
     parameter integer STEPS     = 1,      // root and divide iterations a pipeline stage
     parameter integer DIM       = 2,
     parameter integer TAG_W     = 1,
@@ -80,16 +81,16 @@ module toward_prev_pipe #(
     localparam integer LSQ     = sqrt_pipe_latency(SQRT_BITS, STEPS);
     localparam integer LDV     = div_pipe_latency(DIV_BITS, STEPS);
     localparam integer T_L     = LSQ + 6;
-    localparam integer T_U     = T_L + LDV + 1;
+    localparam integer T_U     = MANTISSA > 0 ? 2 + along_pipe_latency(MANTISSA) : T_L + LDV + 1;
     localparam integer T_G     = T_U + LSQ + 15;
     localparam integer LATENCY = T_G + 6;
-    localparam integer LP0     = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, 0);  // the fallback toward_pipe's
+    localparam integer LP0     = toward_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA);  // the fallback toward_pipe's
     localparam integer CW_     = CARRY ? DW : 1;
     localparam integer OUT_W   = CW_ + TAG_W + 1 + 2 * DW;   // [C], tag, excess, P, q
     // the streams time their writes by pipe_latency.vh: it must count these stages
-    `STRAND_CHECK(toward_prev_pipe_latency_formula, LATENCY == toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, STEPS),
+    `STRAND_CHECK(toward_prev_pipe_latency_formula, LATENCY == toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA),
                   ("toward_prev_pipe: its stages (%0d) and pipe_latency.vh (%0d) disagree in %m", LATENCY,
-                   toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, STEPS)))
+                   toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, STEPS, MANTISSA)))
 
     // ---- the valid bits ----
     reg [LATENCY-1:0] v_q;
@@ -103,8 +104,8 @@ module toward_prev_pipe #(
     wire [DW-1:0] cur_t, cur_t_g;
     /* verilator lint_off PINCONNECTEMPTY */
     // its valid, tag, P and C come with this pipe's own
-    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .STEPS(STEPS), .DIM(DIM), .TAG_W(1),
-                  .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_cur (
+    toward_pipe #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .MANTISSA(MANTISSA), .STEPS(STEPS), .DIM(DIM),
+                  .TAG_W(1), .IN_REG(IN_REG), .BLOCK_MIN(BLOCK_MIN)) u_cur (
         .clk(clk), .reset(reset), .in_valid(in_valid), .in_excess(in_excess),
         .in_p(in_p), .in_c(in_c), .in_rest(in_rest), .in_tag(1'b0),
         .out_valid(), .out_t(cur_t), .out_ok(cur_ok), .out_tag(), .out_p(), .out_c());
@@ -150,20 +151,9 @@ module toward_prev_pipe #(
             assign rabs2[k*W +: W] = rneg2[k] ? ~r2[k*W +: W] + 1'b1 : r2[k*W +: W];  // -2^(W-1): 2^(W-1) unsigned
         end
     endgenerate
-    wire [DIM*2*W-1:0] rsq4;
-    generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_rsq
-            fx_mul_pipe #(.W(W)) u_sq (.clk(clk), .a(r2[k*W +: W]), .b(r2[k*W +: W]), .prod(rsq4[k*2*W +: 2*W]));
-        end
-    endgenerate
-    wire [DW-1:0]    rabs_l, q_dot, q_proj;
-    wire [DIM-1:0]   rneg_u;
+    wire [DW-1:0]    q_dot, q_proj;
     wire [W-1:0]     rest_sq;
     wire [OUT_W-1:0] out_side;
-    delay_line #(.WIDTH(DW), .DELAY(T_L - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
-        .clk(clk), .reset(reset), .in(rabs2), .out(rabs_l));
-    delay_line #(.WIDTH(DIM), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_sign_ring (          // to T_U
-        .clk(clk), .reset(reset), .in(rneg2), .out(rneg_u));
     delay_line #(.WIDTH(DW), .DELAY(T_U - 1), .BLOCK_MIN(BLOCK_MIN)) u_dot_ring (            // to T_U + 1
         .clk(clk), .reset(reset), .in(q2), .out(q_dot));
     delay_line #(.WIDTH(DW), .DELAY(T_U + 7), .BLOCK_MIN(BLOCK_MIN)) u_proj_ring (         // to T_U + 9
@@ -173,40 +163,68 @@ module toward_prev_pipe #(
     delay_line #(.WIDTH(OUT_W), .DELAY(T_G + 2), .BLOCK_MIN(BLOCK_MIN)) u_out_ring (       // to T_G + 4
         .clk(clk), .reset(reset), .in({CARRY ? c2[CW_-1:0] : {CW_{1'b0}}, tag2, excess2, p2, q2}), .out(out_side));
 
-    // ---- cycles 4 .. T_L: r.r and its root ----
-    reg [2*W-1:0] rad5;   // each square <= 2^(2W-2): three fit 2W bits
-    always @(posedge clk)
-        rad5 <= rsq4[0 +: 2*W] + rsq4[2*W +: 2*W] + (DIM == 3 ? rsq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
-    wire [W-1:0] lr;
-    /* verilator lint_off PINCONNECTEMPTY */
-    fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt_r (.clk(clk), .radicand(rad5), .result(lr), .sat());
-    /* verilator lint_on PINCONNECTEMPTY */
-
-    // ---- T_L: the unit dividers; lr = 0 says the start direction has none ----
-    wire [DW-1:0] umag;
-    /* verilator lint_off PINCONNECTEMPTY */
+    // ---- u, the unit vector along r in Q2.(W-2), in T_U + 1 (u1); whether r has no length, in T_G + 5 ----
+    reg  [DW-1:0] u1;
+    wire          zero_g;
     generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_div
-            fx_div_pipe #(.W(W), .F(UF), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
-                .clk(clk), .num(rabs_l[k*W +: W]), .den(lr), .result(umag[k*W +: W]), .div_by_zero(), .sat());
+        if (MANTISSA > 0) begin : g_norm
+            // fx_along_pipe(r, 2^(W-2)) from cycle 2 (its rest a constant: synthesis folds that path)
+            localparam [W-1:0] ONE_U = {2'b01, {(W-2){1'b0}}};
+            wire [DW-1:0] u_a;
+            wire          ok_a;
+            fx_along_pipe #(.W(W), .MB(MANTISSA), .DIM(DIM), .BLOCK_MIN(BLOCK_MIN)) u_along (
+                .clk(clk), .reset(reset), .d(r2), .rest(ONE_U), .t(u_a), .ok(ok_a));
+            reg zero_u1;
+            always @(posedge clk) begin
+                u1      <= u_a;
+                zero_u1 <= !ok_a;
+            end
+            delay_line #(.WIDTH(1), .DELAY(T_G + 5 - (T_U + 1)), .BLOCK_MIN(BLOCK_MIN)) u_zero_ring (
+                .clk(clk), .reset(reset), .in(zero_u1), .out(zero_g));
+            wire unused_norm = &{1'b0, rabs2, rneg2};
+        end else begin : g_full
+            wire [DIM*2*W-1:0] rsq4;
+            for (k = 0; k < DIM; k = k + 1) begin : g_rsq
+                fx_mul_pipe #(.W(W)) u_sq (.clk(clk), .a(r2[k*W +: W]), .b(r2[k*W +: W]), .prod(rsq4[k*2*W +: 2*W]));
+            end
+            wire [DW-1:0]    rabs_l;
+            wire [DIM-1:0]   rneg_u;
+            delay_line #(.WIDTH(DW), .DELAY(T_L - 2), .BLOCK_MIN(BLOCK_MIN)) u_abs_ring (
+                .clk(clk), .reset(reset), .in(rabs2), .out(rabs_l));
+            delay_line #(.WIDTH(DIM), .DELAY(T_U - 2), .BLOCK_MIN(BLOCK_MIN)) u_sign_ring (          // to T_U
+                .clk(clk), .reset(reset), .in(rneg2), .out(rneg_u));
+
+            // ---- cycles 4 .. T_L: r.r and its root ----
+            reg [2*W-1:0] rad5;   // each square <= 2^(2W-2): three fit 2W bits
+            always @(posedge clk)
+                rad5 <= rsq4[0 +: 2*W] + rsq4[2*W +: 2*W] + (DIM == 3 ? rsq4[(DIM-1)*2*W +: 2*W] : {2*W{1'b0}});
+            wire [W-1:0] lr;
+            /* verilator lint_off PINCONNECTEMPTY */
+            fx_sqrt_pipe #(.W(W), .SQRT_BITS(SQRT_BITS), .STEPS(STEPS)) u_sqrt_r (.clk(clk), .radicand(rad5), .result(lr), .sat());
+            /* verilator lint_on PINCONNECTEMPTY */
+
+            // ---- T_L: the unit dividers; lr = 0 says the start direction has none ----
+            wire [DW-1:0] umag;
+            /* verilator lint_off PINCONNECTEMPTY */
+            for (k = 0; k < DIM; k = k + 1) begin : g_div
+                fx_div_pipe #(.W(W), .F(UF), .DIV_BITS(DIV_BITS), .STEPS(STEPS)) u_div (
+                    .clk(clk), .num(rabs_l[k*W +: W]), .den(lr), .result(umag[k*W +: W]), .div_by_zero(), .sat());
+            end
+            /* verilator lint_on PINCONNECTEMPTY */
+            reg  zero_l1;
+            always @(posedge clk) zero_l1 <= lr == {W{1'b0}};
+            delay_line #(.WIDTH(1), .DELAY(T_G + 5 - (T_L + 1)), .BLOCK_MIN(BLOCK_MIN)) u_zero_ring (
+                .clk(clk), .reset(reset), .in(zero_l1), .out(zero_g));
+
+            // ---- T_U: u signed (T_U + 1) ----
+            for (k = 0; k < DIM; k = k + 1) begin : g_u
+                always @(posedge clk)   // |u_k| <= 2^(W-1)-1: its negation fits
+                    u1[k*W +: W] <= rneg_u[k] ? ~umag[k*W +: W] + 1'b1 : umag[k*W +: W];
+            end
         end
     endgenerate
-    /* verilator lint_on PINCONNECTEMPTY */
-    reg  zero_l1;
-    wire zero_g;
-    always @(posedge clk) zero_l1 <= lr == {W{1'b0}};
-    delay_line #(.WIDTH(1), .DELAY(T_G + 5 - (T_L + 1)), .BLOCK_MIN(BLOCK_MIN)) u_zero_ring (
-        .clk(clk), .reset(reset), .in(zero_l1), .out(zero_g));
 
-    // ---- T_U: u signed (T_U + 1); the products q_k u_k ----
-    reg [DW-1:0] u1;
-    generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_u
-            always @(posedge clk)   // |u_k| <= 2^(W-1)-1: its negation fits
-                u1[k*W +: W] <= rneg_u[k] ? ~umag[k*W +: W] + 1'b1 : umag[k*W +: W];
-        end
-    endgenerate
-
+    // ---- T_U + 1: the products q_k u_k ----
     wire [DIM*2*W-1:0] dprod;
     wire [DW-1:0]      dround;
     reg  [DW-1:0]      dterm;     // T_U + 4

@@ -123,8 +123,6 @@ CHECKS = [
      "a pipelined graph's EDGE word {colour end, spring, b, a} must fit W bits"),
     ("mantissa_is_0_or_6_to_20", "MANTISSA == 0 || MANTISSA >= 6",
      "MANTISSA is 0 (the full-width datapath) or 6 .. 20 bits"),
-    ("mantissa_without_projection_previous", "MANTISSA == 0 || !PROJECTION",
-     "the normalised distance datapath (MANTISSA > 0) does not run projection = previous yet"),
     ("node_address_wider_than_W", "AW <= W", "a node address {unit, node} must fit W bits (PIN, NODE writes)"),
 ]
 

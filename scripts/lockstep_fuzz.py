@@ -102,10 +102,10 @@ def random_build(rng, plan=None):
     # the pipes' root and divide iterations a stage, drawn from the build itself rather than rng,
     # so that the builds drawn after this one stay what they were before PIPE_STEPS existed
     b["PIPE_STEPS"] = (plan or {}).get("PIPE_STEPS") or random.Random(repr(sorted(b.items()))).choice([1, 1, 2, 3, 4])
-    # the distance datapath: the full-width root and divide (0) or the normalised one's mantissa bits;
-    # drawn likewise from the build (projection = previous runs the full-width one only)
+    # the distance datapath: the full-width root and divide (0) or the normalised one's mantissa bits,
+    # drawn likewise from the build
     mb = random.Random("mantissa " + repr(sorted(b.items()))).choice([0, 0, 6, 8, 11, 14, 17, 17, 20])
-    b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if (b["EN_CONSTRAINTS"] or b["EN_SPRINGS"]) and not b["PROJECTION"] else 0
+    b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if b["EN_CONSTRAINTS"] or b["EN_SPRINGS"] else 0
     return b
 
 
@@ -125,7 +125,7 @@ PLAN = [
     {"name": "graph 2D rods, previous projection, impulse, no gravity", "GRAPH": 1, "ORDER": 0, "DIM": 2,
      "EN_CONSTRAINTS": 1, "EN_SPRINGS": 0,
      "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 0, "SQRT": "narrow", "DIV": "narrow", "EN_GRAVITY": 0, "W": 20,
-     "PROJECTION": 1},
+     "PROJECTION": 1, "MANTISSA": 11},
     {"name": "chain 3D centred pipelined K=1, previous projection, ground +y", "GRAPH": 0, "DIM": 3, "EN_CONSTRAINTS": 1, "RULE": 0,
      "ORDER": 1, "K": 1, "M": 4, "EN_MOUSE": 1, "GRAB": 0, "EN_GROUND": 1, "GROUND_AXIS": 1, "GROUND_ABOVE": 1,
      "SQRT": "narrow", "DIV": "narrow", "EN_DAMPING": 1, "PROJECTION": 1},
@@ -153,6 +153,7 @@ CLASSES = [
     ("mantissa pipelined", "the normalised distance datapath on a chain's pipelined pass"),
     ("mantissa graph", "the normalised distance datapath on a graph's rods"),
     ("mantissa springs", "a spring's length and direction on the normalised datapath"),
+    ("mantissa previous", "projection = previous on the normalised datapath"),
     ("graph order serial", "a graph's rods in the scene's order (the serial pass, ARCH = 0)"),
     ("graph order redblack", "a graph's rods by colour on the pipelined pass (graph_stream, ARCH = 1)"),
     ("graph colours>1", "a pipelined graph whose rods take several colours (drains between them)"),
@@ -388,6 +389,8 @@ def classes_of(p, facts, resets=0):
         c.add("no constraints")
     if p["EN_SPRINGS"] and p["MANTISSA"]:
         c.add("mantissa springs")
+    if rods and p["PROJECTION"] and p["MANTISSA"]:
+        c.add("mantissa previous")
     if p["EN_GROUND"]:
         c.add("ground " + "xyz"[p["GROUND_AXIS"]])
         c.add("ground above" if p["GROUND_ABOVE"] else "ground below")
