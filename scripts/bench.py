@@ -75,7 +75,7 @@ FRAMES = {"4x5": 400, "8x8": 120, "16x16": 30}
 MODES = ["lockstep", "rtl", "model"]
 REPEATS = 3
 TARGET = 2.0
-GOAL_PER_UNIT, GOAL_MHZ, GOAL_RATIO, GOAL_STRETCH = 0.9, 100.0, 10.0, 0.05  # the speed work's goals
+GOAL_PER_UNIT, GOAL_MHZ, GOAL_STRETCH = 0.9, 100.0, 0.05  # the speed work's goals (and GOAL_HEADLINE above)
 GOALS = {}  # what physics(), rope() and springs() measured of them, for the page's first table
 
 
@@ -212,10 +212,10 @@ def physics():
     mega = lambda v: f"{v / 1e6:.2f}" if v is not None else "-"
     lines = ["| build | rule | architecture | nodes | cycles per frame (RTL) | updates per clock, whole frame | "
              "updates per clock in the constraint passes (of M) | fmax ECP5-85F, MHz (median) | updates/s at fmax, M | "
-             "CPU double, M/s | CPU float, M/s | CPU optimised double, M/s | CPU optimised float, M/s | core / CPU double |",
+             "CPU double, M/s | CPU float, M/s | CPU optimised double, M/s | CPU optimised float, M/s | core / CPU optimised float |",
              "|---|---|---|---|---|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
-        ratio = f"**{r['hw'] / r['cpu_d']:.2f}x**" if r["hw"] else "-"
+        ratio = f"**{r['hw'] / r['fast_f']:.3f}x**" if r["hw"] and r["fast_f"] else "-"
         lines.append(f"| {r['build']} | {r['rule']} | {r['arch']} | {r['nodes']} | {r['cycles']} | {r['per_clock']:.4f} | "
                      f"{r['per_clock_c']:.4f} ({r['per_clock_c'] / r['m']:.3f} M) | {r['mhz_text']} | {mega(r['hw'])} | "
                      f"{mega(r['cpu_d'])} | {mega(r['cpu_f'])} | {mega(r['fast_d'])} | {mega(r['fast_f'])} | {ratio} |")
@@ -236,23 +236,26 @@ def physics():
     if pipe:
         big = max(pipe, key=lambda r: r["nodes"] * 1000 + r["m"])
         GOALS["ratio"] = (big["build"], big["hw"] / big["cpu_d"], big["mhz"])
+        vs_fast = (f"**{big['hw'] / big['fast_f']:.3f}x** one optimised core in float and {big['hw'] / big['fast_d']:.3f}x "
+                   "in double; " if big["fast_f"] else "")
         notes.append(f"The largest pipelined build placed on the ECP5-85F is **{big['build']}** ({big['nodes']} nodes, "
                      f"{big['m']} unit{'s' if big['m'] > 1 else ''}, {width_of(big['build'])}): {mega(big['hw'])} M constraint updates/s at {big['mhz']:.1f} MHz, "
-                     f"**{big['hw'] / big['cpu_d']:.2f}x** one CPU core in double and {big['hw'] / big['cpu_f']:.2f}x in float "
-                     "(goal: 10x).")
+                     + vs_fast + f"{big['hw'] / big['cpu_d']:.2f}x cpu_rope in double (these bench scenes run one "
+                     "iteration a frame: they measure throughput, not a rope that holds its shape; the ropes at rest below "
+                     "do, with their stretch).")
     else:
         notes.append("No pipelined build has an fmax yet (run `make synth`): the updates per second and the "
                      "ratio to the CPU need it.")
     # the clock each pipelined build would need for the ratio goal: its updates per clock are measured
     # above, so this is what the place and route has to reach (not a figure of the device)
     need = [f"{r['build']} {r['rule']} ({width_of(r['build'])}, {r['m']} units; {r['mhz_text']}) "
-            f"{GOAL_RATIO * r['cpu_d'] / r['per_clock'] / 1e6:.0f} MHz"
-            for r in rows if r["arch"] == "pipelined" and r["nodes"] >= 1024]
+            f"{GOAL_HEADLINE * r['fast_f'] / r['per_clock'] / 1e6:,.0f} MHz"
+            for r in rows if r["arch"] == "pipelined" and r["nodes"] >= 1024 and r["fast_f"]]
     if need:
         notes.append("")
-        notes.append(f"The clock at which a pipelined build would reach {GOAL_RATIO:g}x the CPU in double, from the updates "
-                     "per clock measured above and the CPU's row (what its place and route would have to reach, not a "
-                     "measured fmax): " + "; ".join(need) + ".")
+        notes.append(f"The clock at which a pipelined build would reach {GOAL_HEADLINE:g}x one optimised core in float, "
+                     "from the updates per clock measured above and the CPU's row (what its place and route would have "
+                     "to reach, not a measured fmax): " + "; ".join(need) + ".")
     return lines + notes + [x for b, sc in ROPES for x in rope(rows, b, sc)]
 
 
@@ -660,14 +663,6 @@ def goals_table():
                     f"{'' if chains else '; no pipelined chain placed for this RTL'}) | {status} |")
     else:
         rows.append(f"| ECP5-85F fmax >= {GOAL_MHZ:g} MHz | no pipelined build placed for this RTL | **not measured** |")
-    if "ratio" in GOALS:
-        b, ratio, mhz = GOALS["ratio"]
-        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | the largest placed pipelined chain, "
-                    f"{b}, at {mhz:.1f} MHz: {ratio:.2f}x (double){GOALS.get('unplaced', '')} | {met(ratio >= GOAL_RATIO)} |")
-    else:
-        rows.append(f"| the largest ECP5-85F build >= {GOAL_RATIO:g}x one CPU core | no pipelined build of the throughput "
-                    "table's rows placed for this RTL | "
-                    "**not measured** |")
     for rope_b, subs, iters, st, mhz, rest_scene in GOALS.get("stretch", []):
         where = f"at 60 frames/s on {rope_b} at its fmax, {mhz:.1f} MHz" if mhz else \
             f"({rope_b} has no fmax: at the clock its row says 60 frames/s need)"
