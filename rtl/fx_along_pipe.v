@@ -261,15 +261,24 @@ module fx_along_pipe #(
     end
     wire [XW-1:0] three_y0 = {{(XW-MB){1'b0}}, y0_11} + {{(XW-MB-1){1'b0}}, y0_11, 1'b0};
     wire [XW-1:0] xc0  = p_11 ? {nprod_11[XW-2:0], 1'b0} : nprod_11[XW-1:0];
+    // N's bits below MB - 1 are those of -x' C0 2^p (3 Y0 2^(MB-1) has none there), so the
+    // rounding's sticky bit comes from the product, beside the difference, not after it
     reg  [XW-1:0] n_12;
-    always @(posedge clk) n_12 <= (three_y0 << (MB - 1)) - xc0;
-    wire signed [XW-1:0] n_s    = n_12;
-    wire signed [XW-1:0] n_q    = n_s >>> MB;                  // floor(N / 2^MB)
-    wire                 n_up   = n_12[MB-1] && (n_12[MB-2:0] != {(MB-1){1'b0}} || n_q[0]);
-    wire signed [XW-1:0] n_rnd  = n_q + {{(XW-1){1'b0}}, n_up};
+    reg           nsticky_12;
+    always @(posedge clk) begin
+        n_12       <= (three_y0 << (MB - 1)) - xc0;
+        nsticky_12 <= xc0[MB-2:0] != {(MB-1){1'b0}};
+    end
+    // Y1 = floor(N / 2^MB) + up, clamped. N / 2^MB is in [-2^(MB+1), 2^(MB+1)): negative
+    // (N's sign) clamps to 0 (-1 + up is at most 0), bit 2MB set is above TOP, and otherwise
+    // the MB-bit increment's carry is TOP + 1. The three are found beside the increment, so
+    // the stage is one MB-bit carry chain and a multiplexer.
+    wire [MB-1:0] n_low  = n_12[2*MB-1:MB];
+    wire          n_up   = n_12[MB-1] && (nsticky_12 || n_low[0]);
+    wire [MB:0]   n_inc  = {1'b0, n_low} + {{MB{1'b0}}, n_up};
     reg  [MB-1:0] y1_13;
     always @(posedge clk)
-        y1_13 <= n_rnd < 0 ? {MB{1'b0}} : n_rnd > $signed({{(XW-MB){1'b0}}, TOP}) ? TOP : n_rnd[MB-1:0];
+        y1_13 <= n_12[XW-1] ? {MB{1'b0}} : (n_12[2*MB] || n_inc[MB]) ? TOP : n_inc[MB-1:0];
 
     // ---- R, Lr and L wait for Y1 (cycles 4 .. 13, Lr and L to 15); 14, 15: Q = R Y1 ----
     wire [MB+2*LB-1:0] rl_13;
