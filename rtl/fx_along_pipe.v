@@ -352,10 +352,17 @@ module fx_along_pipe #(
                 half_20   <= e[u_19 - 1'b1];
                 sticky_20 <= (e & below_mask) != {EW{1'b0}};
             end
-            wire [KW-1:0] rounded = kept_20 + {{(KW-1){1'b0}}, half_20 && (sticky_20 || kept_20[0])};
-            wire          fits    = rounded[KW-1:W-1] == {(KW-W+1){rounded[KW-1]}};
+            // Saturation is found beside the W-bit increment, not after a KW-bit one: the value
+            // fits unless the bits above W - 1 are not all the sign, or it is 2^(W-1) - 1 and
+            // rounds up; a negative value that rounds into range rounds to -2^(W-1), the
+            // saturated value itself
+            wire          up      = half_20 && (sticky_20 || kept_20[0]);
+            wire          neg     = kept_20[KW-1];
+            wire          over    = kept_20[KW-1:W-1] != {(KW-W+1){neg}}
+                                    || (!neg && kept_20[W-2:0] == {(W-1){1'b1}} && up);
+            wire [W-1:0]  rounded = kept_20[W-1:0] + {{(W-1){1'b0}}, up};
             always @(posedge clk)
-                t[k*W +: W] <= fits ? rounded[W-1:0] : {rounded[KW-1], {(W-1){!rounded[KW-1]}}};
+                t[k*W +: W] <= over ? {neg, {(W-1){!neg}}} : rounded;
         end
     endgenerate
     always @(posedge clk) ok <= !zero_q[2];
