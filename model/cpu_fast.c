@@ -41,8 +41,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "cpu_bench.h"
 #include "scene.h"
 #include "sim.h"
 
@@ -129,13 +129,6 @@ typedef struct {
 #define FABS fabs
 #define FAST(name) fast_dbl3_##name
 #include "cpu_fast_body.inc"
-
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
 
 static int usage(const char *why)
 {
@@ -249,40 +242,49 @@ static void run_stretch(const fast_ops *ops, void *st, const fast_shape *sh, int
            sh->sc->name, type, sh->n, sh->sc->substeps, sh->sc->iterations, frames, last, max, max_frame, rest);
 }
 
+/* The timed loop's run: the scene's frames from its start. */
+typedef struct {
+    const fast_ops *ops;
+    void *st;
+    const fast_shape *sh;
+    int frames;
+    double sink; /* the last node's x, so that the work is used */
+} timed_run;
+
+static void run_frames(void *ctx)
+{
+    timed_run *r = ctx;
+    r->ops->reset(r->st, r->sh);
+    for (int f = 0; f < r->frames; f++) r->ops->frame(r->st, r->sh, f);
+    r->sink += r->ops->position(r->st, r->sh, r->sh->n - 1, 0);
+}
+
 int main(int argc, char **argv)
 {
-    const char *path = NULL, *type = "double";
-    int frames = -1, check = 0, redblack = 0, stretch = 0; /* stretch: --stretch N's N, 0 without it */
-    double min_seconds = 1.0;
+    cpu_bench_args a;
+    cpu_bench_defaults(&a);
+    int stretch = 0; /* --stretch N's N, 0 without it */
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
-        else if (!strcmp(a, "--type") && i + 1 < argc) type = argv[++i];
-        else if (!strcmp(a, "--min-seconds") && i + 1 < argc) min_seconds = atof(argv[++i]);
-        else if (!strcmp(a, "--order") && i + 1 < argc) {
-            const char *o = argv[++i];
-            if (!strcmp(o, "serial")) return usage("--order serial: cpu_fast runs the red/black order (cpu_rope runs both)");
-            if (strcmp(o, "redblack")) return usage("--order takes redblack");
-            redblack = 1;
-        } else if (!strcmp(a, "--check")) check = 1;
-        else if (!strcmp(a, "--stretch") && i + 1 < argc) {
+        const char *why = cpu_bench_option(&a, argc, argv, &i);
+        if (!why) continue;
+        if (*why) return usage(why);
+        if (!strcmp(argv[i], "--stretch") && i + 1 < argc) {
             char *end;
             long v = strtol(argv[++i], &end, 10);
             if (end == argv[i] || *end || v < 1 || v > 1000000000)
                 return usage("--stretch N: N, the frames at rest (the last N of the run), must be a whole number >= 1");
             stretch = (int)v;
-        }
-        else if (a[0] == '-') return usage("unknown option or missing value");
-        else if (!path) path = a;
-        else return usage("more than one SCENE");
+        } else return usage("unknown option or missing value");
     }
-    if (!path) return usage("no SCENE given");
-    if (strcmp(type, "float") && strcmp(type, "double")) return usage("--type takes float or double");
-    if (frames == 0 || frames < -1) return usage("--frames must be at least 1");
-    if (!(min_seconds >= 0)) return usage("--min-seconds must be >= 0");
-    const int is_float = !strcmp(type, "float");
-    if (check && is_float) return usage("--check compares the double type with the frame engine");
-    if (check && stretch) return usage("--check and --stretch: one at a time");
+    const char *wrong = cpu_bench_validate(&a);
+    if (wrong) return usage(wrong);
+    if (a.order && !strcmp(a.order, "serial"))
+        return usage("--order serial: cpu_fast runs the red/black order (cpu_rope runs both)");
+    if (a.order && strcmp(a.order, "redblack")) return usage("--order takes redblack");
+    if (a.check && stretch) return usage("--check and --stretch: one at a time");
+    const char *path = a.path, *type = a.type;
+    const int redblack = a.order != NULL, is_float = !strcmp(type, "float");
+    int frames = a.frames;
 
     scene sc;
     char err[SCENE_ERR_LEN];
@@ -331,7 +333,7 @@ int main(int argc, char **argv)
     const long per_frame =
         sc.en_constraints ? (long)sc.substeps * sc.iterations * (sc.rule == RULE_CENTRED ? sh.n : links) : 0;
 
-    if (check) { /* the frame engine in double, side by side: every position of every frame */
+    if (a.check) { /* the frame engine in double, side by side: every position of every frame */
         sim_dbl eng;
         if (!sim_dbl_init(&eng, &sc, NULL)) {
             fprintf(stderr, "cpu_fast: out of memory\n");
@@ -359,20 +361,13 @@ int main(int argc, char **argv)
 
     if (stretch) run_stretch(ops, st, &sh, frames, stretch, type);
     else {
-        long runs = 0;
-        double t0 = now(), t;
-        double sink = 0; /* the last node's x, so that the work is used */
-        do {
-            ops->reset(st, &sh);
-            for (int f = 0; f < frames; f++) ops->frame(st, &sh, f);
-            sink += ops->position(st, &sh, sh.n - 1, 0);
-            runs++;
-            t = now() - t0;
-        } while (t < min_seconds);
+        timed_run tr = {ops, st, &sh, frames, 0};
+        long runs;
+        const double t = cpu_bench_repeat(run_frames, &tr, a.min_seconds, &runs);
         double updates = (double)per_frame * frames * runs;
         printf("cpu_fast %s type=%s order=redblack nodes=%d updates_per_frame=%ld frames=%ld seconds=%.6f "
                "updates_per_s=%.0f last_x=%g cflags=\"%s\"\n",
-               sc.name, type, sh.n, per_frame, (long)frames * runs, t, t > 0 ? updates / t : 0, sink / (double)runs,
+               sc.name, type, sh.n, per_frame, (long)frames * runs, t, t > 0 ? updates / t : 0, tr.sink / (double)runs,
                CPU_FAST_CFLAGS);
     }
     ops->destroy(st);

@@ -26,8 +26,8 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <time.h>
 
+#include "cpu_bench.h"
 #include "scene.h"
 #include "sim.h"
 
@@ -164,13 +164,6 @@ typedef struct {
 ROPE_IMPL(float, flt)
 ROPE_IMPL(double, dbl)
 
-static double now(void)
-{
-    struct timespec ts;
-    clock_gettime(CLOCK_MONOTONIC, &ts);
-    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
-}
-
 static int usage(const char *why)
 {
     if (why) fprintf(stderr, "cpu_rope: %s\n", why);
@@ -179,29 +172,46 @@ static int usage(const char *why)
     return 2;
 }
 
+/* The timed loop's run: the scene's frames from its start in one type. */
+typedef struct {
+    flt_state *fr;
+    dbl_state *dr;
+    const rope_shape *sh;
+    int frames, is_float;
+    double sink; /* the last node's x, so that the work is used */
+} timed_run;
+
+static void run_frames(void *ctx)
+{
+    timed_run *r = ctx;
+    if (r->is_float) {
+        flt_reset(r->fr, r->sh);
+        for (int f = 0; f < r->frames; f++) flt_frame(r->fr, r->sh, f);
+        r->sink += r->fr->pos[r->sh->n - 1][0];
+    } else {
+        dbl_reset(r->dr, r->sh);
+        for (int f = 0; f < r->frames; f++) dbl_frame(r->dr, r->sh, f);
+        r->sink += r->dr->pos[r->sh->n - 1][0];
+    }
+}
+
 int main(int argc, char **argv)
 {
-    const char *path = NULL, *type = "double";
-    int frames = -1, order = -1, check = 0;
-    double min_seconds = 1.0;
+    cpu_bench_args a;
+    cpu_bench_defaults(&a);
     for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (!strcmp(a, "--frames") && i + 1 < argc) frames = atoi(argv[++i]);
-        else if (!strcmp(a, "--type") && i + 1 < argc) type = argv[++i];
-        else if (!strcmp(a, "--min-seconds") && i + 1 < argc) min_seconds = atof(argv[++i]);
-        else if (!strcmp(a, "--order") && i + 1 < argc) {
-            const char *o = argv[++i];
-            order = !strcmp(o, "serial") ? ORDER_SERIAL : !strcmp(o, "redblack") ? ORDER_REDBLACK : -2;
-            if (order == -2) return usage("--order takes serial or redblack");
-        } else if (!strcmp(a, "--check")) check = 1;
-        else if (a[0] == '-') return usage("unknown option or missing value");
-        else if (!path) path = a;
-        else return usage("more than one SCENE");
+        const char *why = cpu_bench_option(&a, argc, argv, &i);
+        if (why) return usage(*why ? why : "unknown option or missing value");
     }
-    if (!path) return usage("no SCENE given");
-    if (strcmp(type, "float") && strcmp(type, "double")) return usage("--type takes float or double");
-    if (frames == 0 || frames < -1) return usage("--frames must be at least 1");
-    if (!(min_seconds >= 0)) return usage("--min-seconds must be >= 0");
+    const char *wrong = cpu_bench_validate(&a);
+    if (wrong) return usage(wrong);
+    int order = -1;
+    if (a.order) {
+        order = !strcmp(a.order, "serial") ? ORDER_SERIAL : !strcmp(a.order, "redblack") ? ORDER_REDBLACK : -2;
+        if (order == -2) return usage("--order takes serial or redblack");
+    }
+    const char *path = a.path, *type = a.type;
+    int frames = a.frames;
 
     scene sc;
     char err[SCENE_ERR_LEN];
@@ -257,8 +267,7 @@ int main(int argc, char **argv)
     const int is_float = !strcmp(type, "float");
     const long per_frame = sc.en_constraints ? (long)sc.substeps * sc.iterations * (sc.rule == RULE_CENTRED ? sh.n : sh.links) : 0;
 
-    if (check) { /* the frame engine in double, side by side: every position of every frame */
-        if (is_float) return usage("--check compares the double type with the frame engine");
+    if (a.check) { /* the frame engine in double, side by side: every position of every frame */
         sim_dbl eng;
         sim_dbl_init(&eng, &sc, NULL);
         dbl_reset(&dr, &sh);
@@ -279,27 +288,14 @@ int main(int argc, char **argv)
         return 0;
     }
 
-    long runs = 0;
-    double t0 = now(), t;
-    double sink = 0;
-    do {
-        if (is_float) {
-            flt_reset(&fr, &sh);
-            for (int f = 0; f < frames; f++) flt_frame(&fr, &sh, f);
-            sink += fr.pos[sh.n - 1][0];
-        } else {
-            dbl_reset(&dr, &sh);
-            for (int f = 0; f < frames; f++) dbl_frame(&dr, &sh, f);
-            sink += dr.pos[sh.n - 1][0];
-        }
-        runs++;
-        t = now() - t0;
-    } while (t < min_seconds);
+    timed_run tr = {&fr, &dr, &sh, frames, is_float, 0};
+    long runs;
+    const double t = cpu_bench_repeat(run_frames, &tr, a.min_seconds, &runs);
     double updates = (double)per_frame * frames * runs;
     printf("cpu_rope %s type=%s order=%s nodes=%d updates_per_frame=%ld frames=%ld seconds=%.6f updates_per_s=%.0f "
            "last_x=%g cflags=\"%s\"\n",
            sc.name, type, sc.order == ORDER_REDBLACK ? "redblack" : "serial", sh.n, per_frame, (long)frames * runs, t,
-           t > 0 ? updates / t : 0, sink / (double)runs, CPU_ROPE_CFLAGS);
+           t > 0 ? updates / t : 0, tr.sink / (double)runs, CPU_ROPE_CFLAGS);
     sim_dbl_free(&ref);
     scene_free(&sc);
     return 0;
