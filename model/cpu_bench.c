@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "cpu_bench.h"
 
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -59,4 +60,18 @@ double cpu_bench_repeat(void (*run)(void *ctx), void *ctx, double min_seconds, l
         t = now() - t0;
     } while (t < min_seconds);
     return t;
+}
+
+int cpu_bench_load(scene *sc, const char *path, int order)
+{
+    char err[SCENE_ERR_LEN];
+    if (!scene_load(sc, path, err)) {
+        fprintf(stderr, "%s\n", err);
+        return 2;
+    }
+    if (order >= 0 && scene_set_order(sc, (constraint_order)order, err) < 0) {
+        fprintf(stderr, "%s:%d: --order: %s\n", path, scene_key_line(sc, "constraints", "order"), err);
+        return 2;
+    }
+    return 0;
 }

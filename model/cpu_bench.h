@@ -11,6 +11,8 @@
 #ifndef CPU_BENCH_H
 #define CPU_BENCH_H
 
+#include "scene.h"
+
 typedef struct {
     const char *path;   /* the scene file; NULL until given */
     const char *type;   /* "float" or "double" */
@@ -29,6 +31,10 @@ const char *cpu_bench_option(cpu_bench_args *a, int argc, char **argv, int *i);
 
 /* After the options: NULL, or what is wrong with them (no scene, a bad type, ...). */
 const char *cpu_bench_validate(const cpu_bench_args *a);
+
+/* Loads the scene at path into *sc and, with order >= 0, puts its edges in that order.
+ * Returns 0, or 2 after printing `file:line: message` on stderr. */
+int cpu_bench_load(scene *sc, const char *path, int order);
 
 /* Calls run(ctx) until min_seconds have passed (at least once); *runs: how many times.
  * Returns the seconds they took. */

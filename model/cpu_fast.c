@@ -287,15 +287,7 @@ int main(int argc, char **argv)
     int frames = a.frames;
 
     scene sc;
-    char err[SCENE_ERR_LEN];
-    if (!scene_load(&sc, path, err)) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    if (redblack && scene_set_order(&sc, ORDER_REDBLACK, err) < 0) {
-        fprintf(stderr, "%s:%d: --order: %s\n", path, scene_key_line(&sc, "constraints", "order"), err);
-        return 2;
-    }
+    if (cpu_bench_load(&sc, path, redblack ? ORDER_REDBLACK : -1)) return 2;
     int line = 1;
     const char *why = unsupported(&sc, &line);
     if (why) {

@@ -214,15 +214,7 @@ int main(int argc, char **argv)
     int frames = a.frames;
 
     scene sc;
-    char err[SCENE_ERR_LEN];
-    if (!scene_load(&sc, path, err)) {
-        fprintf(stderr, "%s\n", err);
-        return 2;
-    }
-    if (order >= 0 && scene_set_order(&sc, (constraint_order)order, err) < 0) {
-        fprintf(stderr, "%s:1: --order: %s\n", path, err);
-        return 2;
-    }
+    if (cpu_bench_load(&sc, path, order)) return 2;
     const char *why = sc.integrator != INTEGRATOR_VERLET ? "explicit Euler"
                       : sc.en_springs ? "springs" : sc.en_ground ? "the ground" : sc.en_mouse && sc.mouse == MOUSE_GRAB ? "the grab form of the mouse"
                       : sc.projection == PROJECTION_PREVIOUS ? "projection = previous"
