@@ -909,7 +909,9 @@ def mantissa_section(A, results, msynth, claims):
       "takes two of a slice's LUTs). *Units that fit* divides the ECP5-85F's 83,640 logic slots, 156 MULT18X18D "
       "and 208 DP16KD by this core's (which also holds the frame control and the registers a larger build shares, "
       "so it is a bound from below); the last column multiplies them by the rope's own updates a clock a unit "
-      "(its cycles per frame from model/timing.c) and by the clock make synth placed that build at, where it did.")
+      "(its cycles per frame from model/timing.c) and by the clock make synth placed that one-unit build at, where it "
+      "did: a bound from above, as a device full of units places slower (make synth's four-unit m17_4x256_pipe: "
+      "docs/resources.md; the speed headline, at that build's own clock: docs/performance.md).")
     A("")
     if not rows:
         A("No point of the table has a result: run make accuracy.")
