@@ -22,8 +22,9 @@
  *     a port with WE low reads the word into its output latch;
  *   - REGMODE OUTREG adds an output register (loaded from the latch when OCE is high) and so
  *     one cycle of latency; NOREG gives the latch;
- *   - both ports run on one clock (CLKA's edges; a port B in use on other edges stops the
- *     simulation);
+ *   - both ports run on one clock: the edges of CLKA | CLKB, the two pins being one net or
+ *     an unused port's pin tied low (a read-only block, as a ROM, may use port B alone); a
+ *     port in use whose clock does not rise at such an edge stops the simulation;
  *   - a port reading bits that the other port writes at the same edge (its enabled bytes)
  *     reads undefined values (Lattice guarantees nothing across ports, and Yosys's mapping
  *     assumes nothing): here those bits of the old word inverted, so that a comparison with
@@ -350,7 +351,9 @@ module DP16KD #(
     wire [3:0] be_a = byte_enables(DATA_WIDTH_A, ada[3:0]);
     wire [3:0] be_b = byte_enables(DATA_WIDTH_B, adb[3:0]);
     reg [35:0] old_a, old_b, clash_a, clash_b;
-    always @(posedge CLKA) begin
+    // the one clock (see the header): a port's pin tied low when it is unused
+    wire edge_clk = CLKA | CLKB;
+    always @(posedge edge_clk) begin
         if (RSTA || RSTB || (DATA_WIDTH_B == 36 && WEB) || (DATA_WIDTH_A == 36 && DATA_WIDTH_B != 36 && WEB)) begin
             $display("FAIL DP16KD model: a reset, or a write on a read-only 36-bit port, not modelled in %m");
             $fatal(1);
@@ -375,10 +378,9 @@ module DP16KD #(
     end
     /* verilator lint_on BLKSEQ */
     // one clock for both ports (the collision rules above compare the two ports at one edge):
-    // the edge of CLKA clocks port B as well, so a port B in use must see the same edges (an
-    // unused port B has its clock and enable tied low)
-    always @(posedge CLKA or posedge CLKB) if (en_b && CLKA !== CLKB) begin
-        $display("FAIL DP16KD model: port B is used off CLKA's edges in %m (one common clock is modelled)");
+    // a port in use must see every edge
+    always @(posedge edge_clk) if ((en_a && CLKA !== 1'b1) || (en_b && CLKB !== 1'b1)) begin
+        $display("FAIL DP16KD model: a port in use is clocked off the block's one clock in %m (one common clock is modelled)");
         $fatal(1);
     end
 
