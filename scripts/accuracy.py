@@ -488,9 +488,9 @@ def rtl_sample(p):
     except Failure as e:
         r["error"] = f"harness build failed: {e}"
         return r
-    rc, out = flow_run.harness(exe, scene_file, ["--frames", "2"])
-    r["lockstep_pass"] = rc == 0 and out.startswith("PASS")
-    r["measured"] = flow_run.parse(out)["cycles_per_frame"]
+    rc, out, figures = flow_run.harness(exe, scene_file, ["--frames", "2"])
+    r["lockstep_pass"] = rc == 0 and figures.get("verdict") == "pass"
+    r["measured"] = figures.get("cycles_per_frame")
     r["summary"] = (out.strip().splitlines() or [""])[0]
     with open(path, "w") as fh:
         json.dump(r, fh)

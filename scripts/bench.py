@@ -102,6 +102,20 @@ def sh(cmd):
     return out
 
 
+def harness_figures(cmd):
+    """The figures (tb/harness.cpp's --json object) of a harness run, cmd = [harness, scene, args...];
+    recorded and given back in turn with --reuse, as sh() does for other commands' output."""
+    key = " ".join(cmd) + " --json"
+    if RUNS["reuse"]:
+        return json.loads(sh(cmd + ["--json"]))
+    rc, out, figures = flow_run.harness(cmd[0], cmd[1], cmd[2:])
+    if rc != 0 or not figures:
+        sys.stdout.write(out)
+        raise SystemExit(f"bench: {' '.join(cmd)} failed")
+    RUNS["out"].setdefault(key, []).append(json.dumps(figures))
+    return figures
+
+
 def harness_for(scene, order=None):
     """The harness of the scene's build (in build/vl/, shared with make test's lockstep)."""
     try:
@@ -117,9 +131,8 @@ def harness_for(scene, order=None):
 
 
 def rtl_figures(scene, frames, order):
-    """The harness's counters of a run of the RTL alone (run.parse's keys)."""
-    return flow_run.parse(sh([harness_for(scene, order), scene, "--frames", str(frames), "--mode", "rtl",
-                              "--order", order]))
+    """The harness's figures of a run of the RTL alone (its --json keys)."""
+    return harness_figures([harness_for(scene, order), scene, "--frames", str(frames), "--mode", "rtl", "--order", order])
 
 
 SYNTH = {"pnr": {}, "packs": {}, "mults": {}}  # make synth's results for this RTL (main() fills it from synth.gather)
@@ -192,8 +205,8 @@ def physics():
         m, k = units_nodes(b)
         for arch, order, suffix in ARCHS if b not in narrow else ARCHS[1:]:
             f = rtl_figures(scene, PHYS_FRAMES, order)
-            cyc, upf, per_clock, per_clock_c = (f["cycles_per_frame"], f["updates_per_frame"], f["updates_per_clock"],
-                                                f["updates_per_clock_passes"])
+            cyc, upf, per_clock, per_clock_c = (f["cycles_per_frame"], f["constraint_updates_per_frame"], f["constraint_updates_per_clock"],
+                                                f["constraint_updates_per_clock_in_passes"])
             # make synth's build of this one (another rule is another build: "_pair")
             name = b + ("_pair" if rule == "pairwise" else "") + suffix
             mhz, mhz_text = fmax_of(name) if name in synth.BUILD_MAP else (None, "not placed")
@@ -292,7 +305,7 @@ def long_bodies(rows):
         path = write_variant(scene, f"{os.path.basename(scene)[:-6]}_{GOAL_ITERS}it", iterations=GOAL_ITERS)
         f = rtl_figures(path, 2, "redblack")
         k = r["nodes"] // r["m"]
-        per = (r["per_clock_c"] / r["m"], f["updates_per_clock_passes"] / r["m"])
+        per = (r["per_clock_c"] / r["m"], f["constraint_updates_per_clock_in_passes"] / r["m"])
         out.append(f"| {r['build']} | {r['rule']} | {k} | {per[0]:.3f} | {per[1]:.3f} |")
         key = f"per_unit_{r['rule']}"
         if key not in GOALS or per[0] > GOALS[key][2]:  # the best at one iteration, the hard case
@@ -315,12 +328,12 @@ def graph():
         mhz, mhz_text = fmax_of(GRAPH_BUILD + suffix) if suffix else (None, "not placed")
         cpu_d, _ = cpu_rate(GRAPH_SCENE, order, "double")
         cpu_f, _ = cpu_rate(GRAPH_SCENE, order, "float")
-        hw = f["updates_per_clock"] * mhz * 1e6 if mhz else None
+        hw = f["constraint_updates_per_clock"] * mhz * 1e6 if mhz else None
         colours = info["COLOURS"] if info["ARCH"] else "-"
         lines.append(f"| {arch} | {info['K']} | {info['E_RODS']} | {colours} | {f['cycles_per_frame']} | "
-                     f"{f['updates_per_clock_passes']:.4f} | {mhz_text} | {mega(hw)} | {mega(cpu_d)} | {mega(cpu_f)} | "
+                     f"{f['constraint_updates_per_clock_in_passes']:.4f} | {mhz_text} | {mega(hw)} | {mega(cpu_d)} | {mega(cpu_f)} | "
                      f"{f'**{hw / cpu_d:.2f}x**' if hw else '-'} |")
-        print(f"bench graph {arch}: {f['cycles_per_frame']} cycles/frame, {f['updates_per_clock_passes']:.4f} "
+        print(f"bench graph {arch}: {f['cycles_per_frame']} cycles/frame, {f['constraint_updates_per_clock_in_passes']:.4f} "
               f"updates/clock in the passes, fmax {mhz_text}, CPU {cpu_d / 1e6:.1f} M/s double", flush=True)
     return lines
 
@@ -349,11 +362,11 @@ def rope(rows, rope_b, rest_scene):
         cpu_d, _ = cpu_rate(path, "redblack", "double")
         fast_d, _ = cpu_fast_rate(path, "redblack", "double")
         fast_f, _ = cpu_fast_rate(path, "redblack", "float")
-        p = dict(subs=subs, iters=iters, cyc=f["cycles_per_frame"], per_clock=f["updates_per_clock"],
-                 per_clock_c=f["updates_per_clock_passes"], smax=float(st.group(1)), sfin=rest_stretch(csv, rest),
-                 cpu_fps=cpu_d / f["updates_per_frame"], gh2=g / subs ** 2 / lsb,
-                 upf=f["updates_per_frame"], fast_d_fps=fast_d / f["updates_per_frame"] if fast_d else None,
-                 fast_f_fps=fast_f / f["updates_per_frame"] if fast_f else None,
+        p = dict(subs=subs, iters=iters, cyc=f["cycles_per_frame"], per_clock=f["constraint_updates_per_clock"],
+                 per_clock_c=f["constraint_updates_per_clock_in_passes"], smax=float(st.group(1)), sfin=rest_stretch(csv, rest),
+                 cpu_fps=cpu_d / f["constraint_updates_per_frame"], gh2=g / subs ** 2 / lsb,
+                 upf=f["constraint_updates_per_frame"], fast_d_fps=fast_d / f["constraint_updates_per_frame"] if fast_d else None,
+                 fast_f_fps=fast_f / f["constraint_updates_per_frame"] if fast_f else None,
                  cpu_st_d=cpu_fast_stretch(path, "double", ROPE_FRAMES // 2),
                  cpu_st_f=cpu_fast_stretch(path, "float", ROPE_FRAMES // 2))
         points.append(p)
@@ -457,7 +470,7 @@ def springs():
         m, k = units_nodes(b)
         for arch, order, _ in ARCHS:
             f = rtl_figures(scene, 3, order)
-            cyc, per_clock = f["cycles_per_frame"], f["springs_per_clock"]
+            cyc, per_clock = f["cycles_per_frame"], f["spring_updates_per_clock_in_passes"]
             lines.append(f"| {b} | {arch} | {m * k - 1} | {cyc} | {per_clock:.4f} ({per_clock / m:.3f} M) |")
             if arch == "pipelined" and m * k >= 256 and per_clock / m > GOALS.get("per_unit_springs", ("", -1))[1]:
                 GOALS["per_unit_springs"] = (b, per_clock / m)  # the best long body
@@ -526,11 +539,9 @@ def main():
         runs = {mode: [] for mode in MODES}
         for _ in range(REPEATS):
             for mode in MODES:
-                text = sh([harness, scene, "--frames", str(FRAMES[b]), "--mode", mode])
-                m = re.search(r"simulated cycles/s\s+(\d+)", text)
-                c = re.search(r"(\d+) cycles", text)
-                runs[mode].append(float(m.group(1)))
-                cycles = int(c.group(1))
+                f = harness_figures([harness, scene, "--frames", str(FRAMES[b]), "--mode", mode])
+                runs[mode].append(f["simulated_cycles_per_s"])
+                cycles = f["cycles"]
         speeds = {mode: statistics.median(v) for mode, v in runs.items()}
         for mode in MODES:
             print(f"bench {b} {mode}: {speeds[mode]:.0f} cycles/s (median of {REPEATS}, {cycles} cycles each)", flush=True)

@@ -275,17 +275,16 @@ def run_harness(exe, scene_path, frames, cwd, as_built=False):
     """Lockstep for `frames` frames: (cycles per frame, output digest). Failure on a
     mismatch, or when the frames do not all take the same number of cycles. as_built: the
     model follows the build (an effect switched off there), not the scene."""
-    rc, out = flow_run.harness(exe, scene_path, ["--frames", str(frames)] + (["--as-built"] if as_built else []),
-                               cwd=cwd, timeout=3600)
+    rc, out, r = flow_run.harness(exe, scene_path, ["--frames", str(frames)] + (["--as-built"] if as_built else []),
+                                  cwd=cwd, timeout=3600)
     if rc != 0:
         lines = [ln for ln in out.splitlines() if ln.strip()]
         raise Failure(f"lockstep failed ({os.path.relpath(os.path.abspath(cwd), ROOT)}): " + "; ".join(lines[:3]))
-    r = flow_run.parse(out)
-    if r["cycles_per_frame"] is None or r["digest"] is None:
-        raise Failure("the harness printed no 'cycles per frame' or 'output digest' line")
-    if r["cycles_note"]:
-        raise Failure(f"cycles per frame {r['cycles_per_frame']} {r['cycles_note']}")
-    return r["cycles_per_frame"], r["digest"]
+    if r.get("verdict") != "pass" or "output_digest" not in r:
+        raise Failure(f"the harness wrote no passing figures (verdict {r.get('verdict')!r})")
+    if r["cycles_per_frame_min"] != r["cycles_per_frame"]:
+        raise Failure(f"frames took {r['cycles_per_frame_min']} to {r['cycles_per_frame']} cycles")
+    return r["cycles_per_frame"], r["output_digest"]
 
 
 # ---- running many jobs ----

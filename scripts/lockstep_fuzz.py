@@ -41,7 +41,6 @@ import concurrent.futures
 import json
 import os
 import random
-import re
 import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
@@ -579,25 +578,27 @@ def main():
         label, args, build, fault, _ = job
         harness = os.path.join(ROOT, harness_dir(build, fault, fast=True), "harness")
         workdir = os.path.join(ROOT, BUILD, "fuzz")  # where a failing run leaves mismatch.fst
-        rc, out = flow_run.harness(harness, args[0], args[1:], cwd=workdir)
-        return job, rc, out
+        rc, out, figures = flow_run.harness(harness, args[0], args[1:], cwd=workdir)
+        return job, rc, out, figures
 
     failed = passed = 0
+    fuzz_runs = {True: 0, False: 0}   # the random scenes' runs: passed (True), failed
     digests = {}
     covered = {}   # class -> scenes that covered it
     with concurrent.futures.ThreadPoolExecutor(max_workers=a.jobs) as ex:
-        for (label, args, build, fault, _), rc, out in ex.map(one, jobs):
-            lines = flow_run.parse(out)["verdicts"]
+        for (label, args, build, fault, _), rc, out, figures in ex.map(one, jobs):
+            lines = flow_run.verdicts(out)
             if label in scene_facts:
-                resets = re.search(r", (\d+) random resets?,", out)
-                for c in classes_of(*scene_facts[label], resets=int(resets.group(1)) if resets else 0):
+                for c in classes_of(*scene_facts[label], resets=figures.get("resets", 0)):
                     covered[c] = covered.get(c, 0) + 1
             if label.startswith("reset-"):
-                digests[label] = flow_run.parse(out)["digest"]
+                digests[label] = figures.get("output_digest")
                 if rc != 0:
                     failed += 1
                     print("\n".join(lines) or out)
                 continue
+            if label.startswith("fuzz seed"):
+                fuzz_runs[rc == 0] += 1
             if rc == 0:
                 passed += 1
                 print(lines[-1] if lines else f"PASS {label}", flush=True)
@@ -627,7 +628,7 @@ def main():
                 json.dump({"seed": a.seed, "scenes": len(seeds), "builds": len(builds), "fewest": fewest,
                            "harnesses": [harness_dir(b["params"], fast=True) for b in builds],
                            "covered": covered, "classes": CLASSES, "plans": [b["plan"] for b in builds],
-                           "failed": failed}, fh, indent=1)
+                           "failed": failed, "fuzz_passed": fuzz_runs[True], "fuzz_failed": fuzz_runs[False]}, fh, indent=1)
     if digests:
         same = len(set(digests.values())) == 1 and None not in digests.values()
         print(("PASS" if same else "FAIL") + f" reset defines everything: {len(digests) - 1} random-initialisation seeds and "

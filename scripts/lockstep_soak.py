@@ -24,7 +24,6 @@ import argparse
 import hashlib
 import json
 import os
-import re
 import shutil
 import subprocess
 import sys
@@ -132,14 +131,14 @@ def main():
         t0 = time.time()
         cov = os.path.join(SOAK, f"coverage_{seed}.json")
         log = os.path.join(SOAK, f"chunk_{seed}.log")
+        if os.path.exists(cov):
+            os.remove(cov)  # this chunk's counts, not an earlier run's
         with open(log, "w") as fh:
             rc = subprocess.run([sys.executable, os.path.join(ROOT, "scripts", "lockstep_fuzz.py"), str(n), "--seed", str(seed),
                                  "--builds", str(a.builds), "--jobs", str(a.jobs), "--coverage-json", cov],
                                 cwd=ROOT, stdout=fh, stderr=subprocess.STDOUT).returncode
-        text = open(log).read()
-        passes = len(re.findall(r"^PASS lockstep fuzz_", text, re.M))
-        fails = len(re.findall(r"^FAIL lockstep fuzz seed", text, re.M))
         c = load(cov) or {}
+        passes, fails = c.get("fuzz_passed", 0), c.get("fuzz_failed", 0)
         if rc != 0 and fails == 0:
             fails = max(1, n - passes)   # the chunk stopped before its scenes ran (a harness did not build, ...)
         entry = {"seed": seed, "scenes": passes + fails, "failed": fails, "builds": max(0, c.get("builds", 3) - 3),

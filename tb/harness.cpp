@@ -14,7 +14,8 @@
 //
 // usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]
 //                [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority|norm_shift] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--png-dir DIR]
-//                [--quiet] [--as-built] [--order serial|redblack] [--progress] [+verilator+rand+reset+2 +verilator+seed+N]
+//                [--quiet] [--as-built] [--order serial|redblack] [--progress] [--json FILE]
+//                [+verilator+rand+reset+2 +verilator+seed+N]
 //
 // --order replaces the scene's constraint order (as 'strand --order' does): redblack
 // makes a chain's build the pipelined one (ARCH = 1); the harness must be built so
@@ -35,6 +36,10 @@
 // ahead). In half the runs the scene's walk is the second one after the reset: a first
 // walk (of the reset registers) comes before the setup writes, and the walk must have put
 // its registers back for its next start.
+//
+// --json FILE writes every figure the run prints (and the ones a failure prints) as one
+// JSON object, so that scripts read the run's counters, not its prose (the keys are those
+// of Report's calls below; written whole or not at all).
 //
 // --expect-fault needs a build from a copy of the RTL with that fault planted
 // (tb/faults.py): it passes only if the first mismatch is at the cycle the model
@@ -67,7 +72,7 @@
 namespace {
 
 struct Options {
-    std::string scene, trace, csv, png, expect, png_dir;
+    std::string scene, trace, csv, png, expect, png_dir, json;
     std::string mode = "lockstep"; // lockstep | rtl (the RTL alone) | model (the cycle model alone)
     std::string order;             // serial | redblack: the scene's constraint order replaced
     bool as_built = false;         // the model follows the compiled build, not the scene's
@@ -128,6 +133,37 @@ struct Result {
     long predicted_fault = -1;                // --expect-fault: the cycle the fault must show at
     int resets = 0;                           // random resets applied
     std::vector<std::vector<double>> final_pos;
+};
+
+// The run's figures, in the order they are printed, for --json: numbers and strings only.
+struct Report {
+    std::vector<std::pair<std::string, std::string>> kv;
+    void num(const char *k, long v) { kv.emplace_back(k, std::to_string(v)); }
+    void real(const char *k, double v) {
+        char b[64];
+        std::snprintf(b, sizeof b, std::isfinite(v) ? "%.17g" : "null", v);
+        kv.emplace_back(k, b);
+    }
+    void str(const char *k, const std::string &v) {
+        std::string q = "\"";
+        for (char c : v) {
+            if (c == '"' || c == '\\') q += '\\';
+            if ((unsigned char)c < 0x20) { char b[8]; std::snprintf(b, sizeof b, "\\u%04x", c); q += b; continue; }
+            q += c;
+        }
+        kv.emplace_back(k, q + "\"");
+    }
+    // written to FILE.tmp and renamed, so a reader finds the whole object or none
+    bool write(const std::string &path) const {
+        if (path.empty()) return true;
+        FILE *f = std::fopen((path + ".tmp").c_str(), "w");
+        if (!f) return false;
+        std::fputs("{", f);
+        for (size_t i = 0; i < kv.size(); i++)
+            std::fprintf(f, "%s\n  \"%s\": %s", i ? "," : "", kv[i].first.c_str(), kv[i].second.c_str());
+        std::fputs("\n}\n", f);
+        return std::fclose(f) == 0 && std::rename((path + ".tmp").c_str(), path.c_str()) == 0;
+    }
 };
 
 class Run {
@@ -622,7 +658,7 @@ static int usage(const char *why) {
     if (why) std::fprintf(stderr, "harness: %s\n", why);
     std::fprintf(stderr, "usage: harness SCENE [--frames N] [--seed S] [--trace FILE.fst] [--csv FILE] [--png FILE]\n"
                          "               [--expect-fault flip|delay|boundary|slots_cut|bypass|hazard|graph_hazard|graph_boundary|stage_r|odd_pin|step_priority|norm_shift] [--mode lockstep|rtl|model] [--resets N] [--late-pins] [--quiet] [--as-built]\n"
-                         "               [--order serial|redblack] [--progress]\n"
+                         "               [--order serial|redblack] [--progress] [--json FILE]\n"
                          "               [+verilator+rand+reset+2 +verilator+seed+N]\n");
     return 2;
 }
@@ -658,6 +694,7 @@ int main(int argc, char **argv) {
         else if (a == "--late-pins") o.late_pins = true;
         else if (a == "--as-built") o.as_built = true;
         else if (a == "--order") o.order = value("--order");
+        else if (a == "--json") o.json = value("--json");
         else if (a == "--help") return usage(nullptr), 0;
         else if (a[0] == '+') continue; // Verilator's plusargs
         else if (a[0] == '-') return usage(("unknown option " + a).c_str());
@@ -722,21 +759,47 @@ int main(int argc, char **argv) {
     }
     double secs = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 
+    Report rep;
+    rep.str("scene", sc.name);
+    rep.str("path", sc.path);
+    rep.num("seed", (long)o.seed);
+    rep.str("mode", o.mode);
+    rep.num("units", hp.m);
+    rep.num("frames", r.frames);
+    rep.num("cycles", r.cycles);
+    rep.num("resets", r.resets);
+    // the run's verdict ("pass", "mismatch", "fault_caught", "fault_missed", "fault_elsewhere",
+    // "cycles_per_frame") and the process's exit status, written with the figures
+    auto finish = [&](const char *verdict, int status) {
+        rep.str("verdict", verdict);
+        rep.num("exit_status", status);
+        if (!rep.write(o.json)) {
+            std::fprintf(stderr, "harness: cannot write %s\n", o.json.c_str());
+            status = status ? status : 2;
+        }
+        scene_free(&sc);
+        return status;
+    };
+
     if (!r.ok) {
         std::string fst = o.trace.empty() ? "mismatch.fst" : o.trace;
         if (o.trace.empty()) { // replay the same run with tracing on, up to just past the mismatch
             Options ot = o;
             ot.trace = fst;
             ot.quiet = true;
+            ot.json.clear();
             Run replay(ot, sc, hp, argc, argv, true, r.mismatch_cycle + 2);
             replay.go(frames);
         }
+        rep.num("mismatch_cycle", r.mismatch_cycle);
+        rep.str("trace", fst);
         if (!o.expect.empty()) {
             bool right = r.mismatch_cycle == r.predicted_fault;
             std::printf("%s planted fault '%s': first mismatch at cycle %ld, expected at cycle %ld\n", right ? "PASS" : "FAIL",
                         o.expect.c_str(), r.mismatch_cycle, r.predicted_fault);
-            scene_free(&sc);
-            return right ? 0 : 1;
+            rep.str("fault", o.expect);
+            rep.num("fault_predicted_cycle", r.predicted_fault);
+            return finish(right ? "fault_caught" : "fault_elsewhere", right ? 0 : 1);
         }
 #ifdef STRAND_TRACE_TOP
         // this build traces the core's ports and observation port (every signal compared)
@@ -746,13 +809,13 @@ int main(int argc, char **argv) {
 #endif
         std::printf("FAIL lockstep %s seed %" PRIu64 ": mismatch at cycle %ld; trace in %s%s\n", sc.name, o.seed,
                     r.mismatch_cycle, fst.c_str(), depth);
-        scene_free(&sc);
-        return 1;
+        return finish("mismatch", 1);
     }
     if (!o.expect.empty()) {
         std::printf("FAIL planted fault '%s' was not caught (expected at cycle %ld)\n", o.expect.c_str(), r.predicted_fault);
-        scene_free(&sc);
-        return 1;
+        rep.str("fault", o.expect);
+        rep.num("fault_predicted_cycle", r.predicted_fault);
+        return finish("fault_missed", 1);
     }
 
     if (!o.csv.empty()) {
@@ -783,6 +846,20 @@ int main(int argc, char **argv) {
     const long updates = sc.en_constraints ? (long)sc.substeps * sc.iterations * (sc.rule == RULE_CENTRED ? sc.n_nodes : links) : 0;
     // and spring updates (one a spring edge) per clock in the spring passes
     const long springs = sc.en_springs ? (long)sc.substeps * (sc.n_edges - links) : 0;
+    const double sim_rate = secs > 0 ? (double)r.cycles / secs : 0.0;
+    rep.num("cycles_per_frame", r.frame_cycles_max);
+    rep.num("cycles_per_frame_min", r.frame_cycles_min);
+    rep.real("simulated_cycles_per_s", sim_rate);
+    rep.num("constraint_updates_per_frame", updates);
+    rep.num("spring_updates_per_frame", springs);
+    if (r.frames >= 1 && r.frame_cycles_max >= 1) {
+        const double per_frame = (double)updates / (double)r.frame_cycles_max;
+        const double per_pass = r.constrain_cycles ? (double)updates * r.frames / (double)r.constrain_cycles : 0.0;
+        const double spring_rate = r.force_cycles ? (double)springs * r.frames / (double)r.force_cycles : 0.0;
+        rep.real("constraint_updates_per_clock", per_frame);
+        rep.real("constraint_updates_per_clock_in_passes", per_pass);
+        rep.real("spring_updates_per_clock_in_passes", spring_rate);
+    }
     auto throughput = [&]() {
         if (r.frames < 1 || r.frame_cycles_max < 1) return;
         if (updates)
@@ -798,30 +875,34 @@ int main(int argc, char **argv) {
                     r.frames, r.cycles);
         std::printf("  cycles per frame      %ld\n", r.frame_cycles_max);
         throughput();
-        std::printf("  simulated cycles/s    %.0f\n", (double)r.cycles / secs);
-        scene_free(&sc);
-        return 0;
+        std::printf("  simulated cycles/s    %.0f\n", sim_rate);
+        return finish("alone", 0);
     }
     // every frame takes the cycles of the one formula (model/timing.c), as the Icarus frame bench checks too
     const long formula = hw_cycles_per_frame(&hp);
+    rep.num("cycles_per_frame_formula", formula);
     if (r.frames > 0 && (r.frame_cycles_min != formula || r.frame_cycles_max != formula)) {
         std::printf("FAIL lockstep %s seed %" PRIu64 ": frames took %ld to %ld cycles, the formula (hw_cycles_per_frame) says %ld\n",
                     sc.name, o.seed, r.frame_cycles_min, r.frame_cycles_max, formula);
-        scene_free(&sc);
-        return 1;
+        return finish("cycles_per_frame", 1);
     }
+    char digest[17];
+    std::snprintf(digest, sizeof digest, "%016" PRIx64, r.digest);
+    rep.real("max_stretch_pct", r.err.stretch);
+    rep.real("error_rms_rest_lengths", rms);
+    rep.real("error_max_rest_lengths", r.err.worst);
+    rep.str("output_digest", digest);
     std::printf("PASS lockstep %s seed %" PRIu64 ": %d frames, %ld cycles%s, every output equal in every cycle\n", sc.name, o.seed,
                 r.frames, r.cycles, r.resets ? (", " + std::to_string(r.resets) + (r.resets == 1 ? " random reset" : " random resets")).c_str() : "");
     if (!o.quiet) {
         std::printf("  cycles per frame      %ld%s\n", r.frame_cycles_max,
                     r.frame_cycles_min == r.frame_cycles_max ? "" : " (varies: a bug)");
         throughput();
-        std::printf("  simulated cycles/s    %.0f (RTL and model in lockstep)\n", (double)r.cycles / secs);
+        std::printf("  simulated cycles/s    %.0f (RTL and model in lockstep)\n", sim_rate);
         std::printf("  max stretch           %.4f %%\n", r.err.stretch);
         std::printf("  error against double  rms %.3g, max %.3g rest lengths\n", rms, r.err.worst);
-        std::printf("  output digest         %016" PRIx64 "\n", r.digest);
+        std::printf("  output digest         %s\n", digest);
     }
-    scene_free(&sc);
-    return 0;
+    return finish("pass", 0);
 }
 #endif  // STRAND_DEMO
