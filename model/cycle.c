@@ -10,6 +10,7 @@
 #include <stdlib.h>
 #include <string.h>
 
+#include "hwgen.h"
 #include "strand_regs.h"
 
 static fx_t from_word(const fx_format *fmt, uint32_t w)

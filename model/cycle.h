@@ -16,7 +16,8 @@
 
 #include <stdint.h>
 
-#include "hwgen.h"
+#include "hw_params.h"
+#include "timing.h"
 #include "sim.h"
 
 #ifdef __cplusplus

@@ -8,23 +8,14 @@
 
 #include <stdint.h>
 
+#include "hw_params.h"
 #include "scene.h"
 #include "sim.h"
-#include "strand_params.h"
+#include "timing.h"
 
 #ifdef __cplusplus
 extern "C" {
 #endif
-
-/* The RTL build a scene needs: every parameter of strand_core (the table of
-   scripts/gen_params.py, lower-case names: w, f, m, k, ..., en_springs, ...) and
-   its derived widths (uw, iw, aw, cw, sw, pair, wb, dbg_w, ...). */
-typedef struct {
-#define STRAND_FIELD(NAME, name, ...) int name;
-    STRAND_PARAMS(STRAND_FIELD)
-    STRAND_DERIVED(STRAND_FIELD)
-#undef STRAND_FIELD
-} hw_params;
 
 typedef struct {
     int addr;
@@ -53,7 +44,5 @@ bool hw_export(const scene *sc, const char *dir, int frames, char *err, size_t l
 #ifdef __cplusplus
 }
 #endif
-
-#include "timing.h"
 
 #endif

@@ -8,6 +8,8 @@
 
 #include <stdbool.h>
 
+#include "hw_params.h"
+
 #ifdef __cplusplus
 extern "C" {
 #endif

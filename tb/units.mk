@@ -227,7 +227,7 @@ $(foreach t,$(UNITS_DSP_TESTS),$(eval $(call UNITS_DSP_RULE,$(word 1,$(subst :, 
 # ---- the datapaths: toward, spring_force ----
 UNITS_DP_UNITS := fx_add fx_mul fx_round fx_sqrt fx_div
 UNITS_GEN_DP   := $(UNITS_BUILD)/gen_vectors_dp
-UNITS_DP_MODEL := $(UNITS_MODEL) $(addprefix $(UNITS_ROOT)/model/,engine_fixed.c engine_body.h sim.h scene.c scene.h hwgen.h timing.h)
+UNITS_DP_MODEL := $(UNITS_MODEL) $(addprefix $(UNITS_ROOT)/model/,engine_fixed.c engine_body.h sim.h scene.c scene.h hwgen.h hw_params.h timing.h)
 # the parameter table's C header (the latency formulas take a build): the top Makefile makes it
 UNITS_PARAMS_H := $(BUILD)/gen/strand_params.h
 ifeq ($(GEN_HDRS),)
