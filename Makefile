@@ -19,7 +19,7 @@ GEN       := $(BUILD)/gen
 GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh $(GEN)/strand_params.h $(GEN)/strand_params.vh
 MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel -I$(GEN) $(DEP_CFLAGS)
 
-MODEL_SRC := model/fixed.c model/scene.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c \
+MODEL_SRC := model/fixed.c model/scene.c model/scene_edit.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c \
              model/hwgen.c model/timing.c model/cycle.c model/board.c model/cpu_bench.c
 MODEL_HDR := $(wildcard model/*.h)
 MODEL_OBJ := $(MODEL_SRC:model/%.c=$(BUILD)/model/%.o)

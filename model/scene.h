@@ -138,6 +138,15 @@ bool scene_load(scene *sc, const char *path, char *err);
 void scene_free(scene *sc);
 
 /*
+ * Write `out`: the scene file `in` with each of n_assign "SECTION.KEY=VALUE" set (a key's
+ * line replaced, or added at the end of its section; a missing section added at the end),
+ * comments and layout kept. The result must load (scene_load): else false, nothing written,
+ * and in err the parser's message said of its source, "in:line: message" or
+ * "'SECTION.KEY=VALUE': message" (scene_edit.c).
+ */
+bool scene_edit(const char *in, const char *out, int n_assign, const char *const *assign, char *err);
+
+/*
  * Put the constraint edges (rods and struts) in the order a constraint pass takes them:
  * the scene's own order (serial), or colour by colour of a greedy edge colouring made in
  * the scene's order, each colour in the scene's order (redblack: a chain's links then

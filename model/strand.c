@@ -36,6 +36,7 @@ static const char *usage_main =
     "  info SCENE       the RTL build the scene needs: every core parameter, the derived\n"
     "                   widths and the cycle counts (--json for scripts)\n"
     "  board --port DEV SCENE  run the scene on a board over its serial link (make bitstream)\n"
+    "  set SCENE OUT SECTION.KEY=VALUE...  write OUT: SCENE with those keys set (checked)\n"
     "\n"
     "'strand COMMAND --help' describes each command's options.\n";
 
@@ -752,6 +753,32 @@ static int cmd_info(int argc, char **argv)
     return 0;
 }
 
+/* ---- set ---- */
+
+static const char *usage_set =
+    "usage: strand set SCENE OUT SECTION.KEY=VALUE...\n"
+    "Write OUT: SCENE with each key set, its line replaced or added at the end of its\n"
+    "section (a missing section at the end of the file), comments and layout kept. OUT\n"
+    "must be a valid scene: else 'file:line: message' or 'SECTION.KEY=VALUE: message'\n"
+    "on stderr, exit 2, and nothing written. The scripts derive their scenes this way.\n"
+    "  e.g. strand set sim/scenes/pendulum.scene /tmp/p.scene time.substeps=16 constraints.rule=centred\n";
+
+static int cmd_set(int argc, char **argv)
+{
+    char err[SCENE_ERR_LEN];
+    for (int i = 1; i < argc; i++)
+        if (!strcmp(argv[i], "--help") || !strcmp(argv[i], "-h")) {
+            fputs(usage_set, stdout);
+            return 0;
+        }
+    if (argc < 3) return bad_arg("set", "%s", "needs SCENE and OUT");
+    if (!scene_edit(argv[1], argv[2], argc - 3, (const char *const *)argv + 3, err)) {
+        fprintf(stderr, "%s\n", err);
+        return EXIT_BAD_INPUT;
+    }
+    return 0;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2 || !strcmp(argv[1], "--help") || !strcmp(argv[1], "-h") || !strcmp(argv[1], "help")) {
@@ -764,6 +791,7 @@ int main(int argc, char **argv)
     if (!strcmp(argv[1], "hwgen")) return cmd_hwgen(argc - 1, argv + 1);
     if (!strcmp(argv[1], "info")) return cmd_info(argc - 1, argv + 1);
     if (!strcmp(argv[1], "board")) return cmd_board(argc - 1, argv + 1);
+    if (!strcmp(argv[1], "set")) return cmd_set(argc - 1, argv + 1);
     fprintf(stderr, "strand: unknown command '%s'\n%s", argv[1], usage_main);
     return EXIT_BAD_INPUT;
 }

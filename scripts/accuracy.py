@@ -27,6 +27,7 @@ import os
 import re
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 
@@ -208,34 +209,14 @@ def derive(p):
         want["time"]["damping"] = p["damping"]
     if p.get("mantissa"):
         want["format"]["mantissa"] = p["mantissa"]
-    lines = open(os.path.join(ROOT, p["path"])).read().splitlines()
-    out, section, done = [], None, set()
-
-    def flush(sec):
-        for k, v in want.get(sec, {}).items():
-            if (sec, k) not in done:
-                out.append(f"{k} = {v}")
-                done.add((sec, k))
-
-    for ln in lines:
-        m = re.match(r"\s*\[(\w+)\]", ln)
-        if m:
-            flush(section)
-            section = m.group(1)
-            out.append(ln)
-            continue
-        m = re.match(r"\s*(\w+)\s*=", ln)
-        if m and section in want and m.group(1) in want[section]:
-            out.append(f"{m.group(1)} = {want[section][m.group(1)]}")
-            done.add((section, m.group(1)))
-            continue
-        out.append(ln)
-    flush(section)
-    for sec in ("format", "time"):
-        if any((sec, k) not in done for k in want[sec]):
-            out.append(f"[{sec}]")
-            flush(sec)
-    return "\n".join(out) + "\n"
+    fd, tmp = tempfile.mkstemp(prefix="derive-", suffix=".scene", dir=os.path.join(ROOT, BUILD))
+    os.close(fd)
+    try:
+        flow_run.scene_set(p["path"], tmp, {f"{sec}.{k}": v for sec, keys in want.items() for k, v in keys.items()})
+        with open(tmp) as fh:
+            return fh.read()
+    finally:
+        os.remove(tmp)
 
 
 _model_hash = None

@@ -481,28 +481,20 @@ def springs():
 def rule_variant(scene, rule):
     """scene with its constraint rule replaced, written under build/bench/."""
     name = os.path.basename(scene).replace(".scene", f"_{rule}.scene")
-    out = os.path.join(BUILD, "bench", name)
-    os.makedirs(os.path.join(ROOT, BUILD, "bench"), exist_ok=True)
-    text, n = re.subn(r"^rule = \w+$", f"rule = {rule}", open(os.path.join(ROOT, scene)).read(), flags=re.M)
-    if n != 1:
-        raise SystemExit(f"bench: {scene} names no constraint rule to replace")
-    with open(os.path.join(ROOT, out), "w") as f:
-        f.write(text)
-    return out
+    return derived(scene, name, {"constraints.rule": rule})
 
 
 def write_variant(scene, name, **keys):
     """scene with [time] keys set (iterations, substeps, frames), written under build/bench/."""
-    out = os.path.join(BUILD, "bench", f"{name}.scene")
-    os.makedirs(os.path.join(ROOT, BUILD, "bench"), exist_ok=True)
-    text = open(os.path.join(ROOT, scene)).read()
-    for key, value in keys.items():
-        text, n = re.subn(rf"^{key} = .*$", f"{key} = {value}", text, flags=re.M)
-        if not n:
-            text = re.sub(r"^\[time\]\n", f"[time]\n{key} = {value}\n", text, count=1, flags=re.M)
-    with open(os.path.join(ROOT, out), "w") as f:
-        f.write(text)
-    return out
+    return derived(scene, f"{name}.scene", {f"time.{k}": v for k, v in keys.items()})
+
+
+def derived(scene, name, keys):
+    """build/bench/NAME: scene with keys set (strand set)."""
+    try:
+        return flow_run.scene_set(scene, os.path.join(BUILD, "bench", name), keys)
+    except Failure as e:
+        raise SystemExit(f"bench: {e}")
 
 
 # the centred rule's passes take the Verlet step in their first sweep (FUSE): its 4 cycles are the passes' too

@@ -261,6 +261,63 @@ static void test_shipped_scenes_load(void **state)
     }
 }
 
+/* scene_edit: a key's line replaced with its comment, one added at the end of its section, a
+   new section; a refused value writes nothing and says which assignment or line is wrong */
+static char *slurp(const char *path)
+{
+    static char buf[4096];
+    FILE *f = fopen(path, "r");
+    assert_non_null(f);
+    size_t n = fread(buf, 1, sizeof buf - 1, f);
+    buf[n] = 0;
+    fclose(f);
+    return buf;
+}
+
+static void test_scene_edit(void **state)
+{
+    (void)state;
+    char err[SCENE_ERR_LEN], in[64], out[80];
+    const char *path = write_scene("; a chain\n" TIME "frames = 10   ; ten\n\n" CHAIN "\n; the end\n");
+    snprintf(in, sizeof in, "%s", path);
+    snprintf(out, sizeof out, "%s.out", in);
+    const char *set[] = {"time.frames=20", "chain.pinned=0", "gravity.accel=0 -981"};
+    assert_true(scene_edit(in, out, 3, set, err));
+    assert_string_equal(slurp(out), "; a chain\n[time]\ndt = 0.01\nframes = 20\n\n[chain]\nunits = 2\nnodes_per_unit = 3\n"
+                                    "start = 0 0\nstep = 1 0\npinned = 0\n\n; the end\n\n[gravity]\naccel = 0 -981\n");
+    scene sc;
+    assert_true(scene_load(&sc, out, err));
+    assert_int_equal(sc.frames, 20);
+    scene_free(&sc);
+    unlink(out);
+
+    const char *bad_value[] = {"time.frames=20", "time.substeps=0"};
+    assert_false(scene_edit(in, out, 2, bad_value, err));
+    assert_non_null(strstr(err, "'time.substeps=0': "));
+    assert_non_null(strstr(err, "out of range"));
+    assert_int_equal(access(out, F_OK), -1);
+    char tmp[96];
+    snprintf(tmp, sizeof tmp, "%s.tmp", out);
+    assert_int_equal(access(tmp, F_OK), -1);
+
+    const char *bad_section[] = {"wind.speed=3"};
+    assert_false(scene_edit(in, out, 1, bad_section, err));
+    assert_string_equal(err, "'wind.speed=3': unknown section [wind]");
+
+    const char *bad_form[] = {"frames=3"}, *bad_comment[] = {"time.frames=3 ; three"};
+    assert_false(scene_edit(in, out, 1, bad_form, err));
+    assert_non_null(strstr(err, "want SECTION.KEY=VALUE"));
+    assert_false(scene_edit(in, out, 1, bad_comment, err));
+    assert_non_null(strstr(err, "comment character"));
+
+    /* a contradiction found on a line of the input is blamed on that line */
+    const char *narrow[] = {"format.width=12", "format.frac=16"};
+    assert_false(scene_edit(in, out, 2, narrow, err));
+    assert_non_null(strstr(err, "'format.frac=16': "));
+    assert_int_equal(access(out, F_OK), -1);
+    unlink(in);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -268,7 +325,7 @@ int main(void)
         cmocka_unit_test(test_graph_errors),            cmocka_unit_test(test_format_errors),
         cmocka_unit_test(test_missing_file),            cmocka_unit_test(test_chain_layout_and_defaults),
         cmocka_unit_test(test_nul_byte),               cmocka_unit_test(test_accepted_forms),
-        cmocka_unit_test(test_shipped_scenes_load),
+        cmocka_unit_test(test_shipped_scenes_load),       cmocka_unit_test(test_scene_edit),
         cmocka_unit_test(test_constraint_order),
     };
     return cmocka_run_group_tests_name("scene files", tests, NULL, NULL);

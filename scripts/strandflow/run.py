@@ -42,3 +42,13 @@ def verdicts(out):
 def strand(args, what=None):
     """`strand ARGS`: its output; Failure with its message when it refuses."""
     return run_checked([STRAND] + list(args), what=what or "strand " + " ".join(args[:2]))
+
+
+def scene_set(scene, out, keys):
+    """Write OUT: SCENE with keys set ({"section.key": value}) by `strand set`, the one scene
+    writer (the C parser's rules; comments and layout kept). Failure with its message (which
+    assignment or line is wrong) when the result would not be a valid scene."""
+    os.makedirs(os.path.dirname(os.path.abspath(out)), exist_ok=True)
+    run_checked([STRAND, "set", os.path.join(ROOT, scene), os.path.join(ROOT, out)]
+                + [f"{k}={v}" for k, v in keys.items()], what=f"strand set {scene}")
+    return out
