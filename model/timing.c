@@ -13,6 +13,12 @@ long hw_along_pipe_latency(const hw_params *hp)
     return 21;
 }
 
+long hw_sqrt_latency(const hw_params *hp) { return hp->sqrt_bits + 2L; }
+
+long hw_div_latency(const hw_params *hp) { return hp->div_bits + 2L; }
+
+long hw_mul_pipe_latency(void) { return 2; }
+
 long hw_toward_latency(const hw_params *hp)
 {
     if (hp->mantissa) /* toward.v (toward_prev.v): one operation through toward_pipe (toward_prev_pipe), done the
@@ -23,9 +29,9 @@ long hw_toward_latency(const hw_params *hp)
                            phase, T formed, done */
         return 2L * hp->sqrt_bits + (long)hp->dim * hp->div_bits + 7L * hp->dim + 20;
     /* toward.v: DIM squares issued, the last used 2 cycles later (the multiplier pipeline), the
-       root (SQRT_BITS + 2), the divide (DIV_BITS + 2), DIM products issued, the last used 3
-       cycles later (rounded in between), done */
-    return hp->sqrt_bits + hp->div_bits + 2L * hp->dim + 10;
+       root (fx_sqrt), the divide (fx_div), DIM products issued, the last used 3 cycles later
+       (rounded in between), done */
+    return hw_sqrt_latency(hp) + hw_div_latency(hp) + 2L * hp->dim + 6;
 }
 
 /* fx_sqrt_pipe.v and fx_div_pipe.v (rtl/pipe_latency.vh): a load stage, BITS + 1 iterations

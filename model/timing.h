@@ -16,6 +16,11 @@ extern "C" {
 
 /* fx_along_pipe.v (MANTISSA > 0, the normalised distance datapath): inputs in cycle 0, t in this cycle. */
 long hw_along_pipe_latency(const hw_params *hp);
+/* fx_sqrt.v, fx_div.v: start to done (a load cycle, BITS + 1 iterations, done). */
+long hw_sqrt_latency(const hw_params *hp);
+long hw_div_latency(const hw_params *hp);
+/* fx_mul_pipe.v: operands on the inputs in cycle 0, the product in cycle 2. */
+long hw_mul_pipe_latency(void);
 /* toward.v: start to done (the distance datapath of the constraints). */
 long hw_toward_latency(const hw_params *hp);
 /* fx_sqrt_pipe.v, fx_div_pipe.v (rtl/pipe_latency.vh): operands sampled at edge e give their

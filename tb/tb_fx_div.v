@@ -5,14 +5,15 @@
  * tb_fx_div - self-checking testbench for rtl/fx_div.v: values and timing.
  *
  * Reads vectors written by tb/gen_vectors.c (record: flags {0,0,sat,dbz}, num, den,
- * y). Plusargs: +vectors=FILE +n=COUNT +name=NAME.
- * For every vector it checks the latency contract of fx_div.v, sampling the
- * outputs between edges (inputs are driven on the falling edge):
- *   - after edge 0 (start sampled) .. edge DIV_BITS: busy = 1, done = 0, and
- *     result and the flags still hold the previous operation's values;
- *   - after edge DIV_BITS+1: done = 1, busy = 0, result and the flags as expected;
- *   - done lasts one cycle (checked by an idle cycle after every 4th vector, and
- *     by the next operation, which otherwise starts back to back in the done cycle).
+ * y). Plusargs: +vectors=FILE +n=COUNT +latency=L +name=NAME (L: model/timing.c
+ * hw_div_latency, from tb/unit_latency.c).
+ * The latency contract (start, busy, done) is tb/serial_latency_check.v's, instantiated here;
+ * for every vector the bench checks the values, sampling the outputs between edges
+ * (inputs are driven on the falling edge; start is sampled at edge 0):
+ *   - after edges 0 .. L - 2: result and the flags still hold the previous operation's;
+ *   - after edge L - 1 (the done cycle): result and the flags as expected;
+ *   - done lasts one cycle (an idle cycle after every 4th vector, and the next
+ *     operation, which otherwise starts back to back in the done cycle).
  * Every 3rd operation holds start high with random operands while busy, which
  * must be ignored. After reset, and after a reset in the middle of an operation,
  * busy, done, result and the flags must be 0.
@@ -35,6 +36,8 @@ module tb_fx_div;
     reg [8*200-1:0]  first_msg;
     integer          n, i, k, errors;
     reg [63:0]       cycles, limit;
+    integer          LATENCY;  // start cycle to done cycle: +latency=, from model/timing.c
+    wire [31:0]      contract_violations;
 
     reg              clk = 1'b0;
     reg              reset = 1'b1;
@@ -54,7 +57,10 @@ module tb_fx_div;
 
     always #5 clk = !clk;
 
-    // Watchdog in clock cycles: every operation needs DIV_BITS+2 at most.
+    serial_latency_check #(.DEPTH(72)) contract (.clk(clk), .reset(reset), .latency(LATENCY[15:0]), .start(start),
+                                                 .busy(busy), .done(done), .violations(contract_violations));
+
+    // Watchdog in clock cycles: every operation needs LATENCY at most.
     initial cycles = 64'd0;
     always @(posedge clk) begin
         cycles = cycles + 64'd1;
@@ -88,12 +94,14 @@ module tb_fx_div;
 
     initial begin
         limit = 64'd1000;
+        LATENCY = 2;
         if (!$value$plusargs("name=%s", name)) name = "tb_fx_div";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
-            $display("FAIL %0s: need +vectors=FILE and +n=1..%0d", name, MAXN);
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
+            !$value$plusargs("latency=%d", LATENCY) || LATENCY < 3 || LATENCY > 72) begin
+            $display("FAIL %0s: need +vectors=FILE, +n=1..%0d and +latency=3..72", name, MAXN);
             $fatal(1, "bad arguments");
         end
-        limit = n * (DIV_BITS + 3) + 1000;
+        limit = n * (LATENCY + 1) + 1000;
         $readmemh(file, mem, 0, n - 1);
         if (^mem[n - 1] === 1'bx) begin
             $display("FAIL %0s: vector file %0s has fewer than %0d records", name, file, n);
@@ -107,7 +115,7 @@ module tb_fx_div;
         repeat (2) @(posedge clk);
         @(negedge clk);
         reset = 1'b0;
-        check(busy === 1'b0 && done === 1'b0 && result === {W{1'b0}} && dbz === 1'b0 && sat === 1'b0, -1);
+        check(result === {W{1'b0}} && dbz === 1'b0 && sat === 1'b0, -1);
         prev_y = {W{1'b0}};
         prev_sat = 1'b0;
         prev_dbz = 1'b0;
@@ -130,9 +138,9 @@ module tb_fx_div;
                 reset = 1'b1;
                 @(posedge clk); @(negedge clk);
                 reset = 1'b0;
-                check(busy === 1'b0 && done === 1'b0 && result === {W{1'b0}} && dbz === 1'b0 && sat === 1'b0, -2);
+                check(result === {W{1'b0}} && dbz === 1'b0 && sat === 1'b0, -2);
                 @(posedge clk); @(negedge clk);
-                check(busy === 1'b0 && done === 1'b0 && result === {W{1'b0}} && dbz === 1'b0 && sat === 1'b0, -2);
+                check(result === {W{1'b0}} && dbz === 1'b0 && sat === 1'b0, -2);
                 prev_y = {W{1'b0}};
                 prev_sat = 1'b0;
                 prev_dbz = 1'b0;
@@ -145,28 +153,30 @@ module tb_fx_div;
             den = den_i;
             @(posedge clk); @(negedge clk);
             drive_busy;
-            check(busy === 1'b1 && done === 1'b0 && result === prev_y && dbz === prev_dbz && sat === prev_sat, 0);
-            // Edges 1 .. DIV_BITS: iterations, nothing visible changes.
-            for (k = 1; k <= DIV_BITS; k = k + 1) begin
+            check(result === prev_y && dbz === prev_dbz && sat === prev_sat, 0);
+            // Edges 1 .. L - 2: iterations, nothing visible changes.
+            for (k = 1; k <= LATENCY - 2; k = k + 1) begin
                 @(posedge clk); @(negedge clk);
                 drive_busy;
-                check(busy === 1'b1 && done === 1'b0 && result === prev_y && dbz === prev_dbz && sat === prev_sat, k);
+                check(result === prev_y && dbz === prev_dbz && sat === prev_sat, k);
             end
-            // Edge DIV_BITS+1: rounding iteration, result loaded, done.
+            // Edge L - 1: rounding iteration, result loaded, done.
             @(posedge clk); @(negedge clk);
             start = 1'b0;
-            check(busy === 1'b0 && done === 1'b1 && result === y_exp && dbz === dbz_exp && sat === sat_exp, DIV_BITS + 1);
+            check(result === y_exp && dbz === dbz_exp && sat === sat_exp, LATENCY - 1);
             prev_y = y_exp;
             prev_sat = sat_exp;
             prev_dbz = dbz_exp;
             // Every 4th vector: one idle cycle; done must have dropped, result holds.
             if (i % 4 == 3) begin
                 @(posedge clk); @(negedge clk);
-                check(busy === 1'b0 && done === 1'b0 && result === prev_y && dbz === prev_dbz && sat === prev_sat, DIV_BITS + 2);
+                check(result === prev_y && dbz === prev_dbz && sat === prev_sat, LATENCY);
             end
         end
-        if (errors != 0) begin
-            $display("FAIL %0s: %0d checks failed; first: %0s", name, errors, first_msg);
+        @(posedge clk); @(negedge clk);  // the last done cycle's contract check
+        if (errors != 0 || contract_violations != 0) begin
+            $display("FAIL %0s: %0d value checks and %0d cycles of the latency contract failed; first value check: %0s",
+                     name, errors, contract_violations, errors != 0 ? first_msg : "none");
             $fatal(1, "mismatch");
         end
         $display("PASS %0s (%0d vectors)", name, n);

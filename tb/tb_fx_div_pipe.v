@@ -6,8 +6,9 @@
  *
  * Reads the vectors of fx_div (tb/gen_vectors.c, unit div; record: flags {0,0,sat,dbz},
  * num, den, y) and streams them back to back, new operands every clock; the result of
- * the operands sampled at edge e must be there after edge e + ceil((DIV_BITS + 1) / STEPS) + 1, whatever
- * came before and after them. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * the operands driven in cycle c must be there in cycle c + L (model/timing.c, +latency=), whatever
+ * came before and after them. Plusargs: +vectors=FILE +n=COUNT
+ * +latency=L (tb/unit_latency.c: model/timing.c) +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
  */
@@ -21,7 +22,7 @@ module tb_fx_div_pipe;
 
     localparam integer FD  = 4 * ((W + 3) / 4); // a W-bit field padded to hex digits
     localparam integer RW  = 4 + 3 * FD;        // record width
-    localparam integer LAT = (DIV_BITS + STEPS) / STEPS + 2; // cycles from operands driven to their result
+    integer            LAT;  // cycles from the operands driven to the result: +latency=, from model/timing.c
 
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
@@ -40,8 +41,9 @@ module tb_fx_div_pipe;
 
     initial begin
         if (!$value$plusargs("name=%s", name)) name = "tb_fx_div_pipe";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
-            $display("FAIL %0s: needs +vectors=FILE and +n=1..%0d", name, MAXN);
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
+            !$value$plusargs("latency=%d", LAT) || LAT < 1 || LAT > 64) begin
+            $display("FAIL %0s: needs +vectors=FILE, +n=1..%0d and +latency=1..64", name, MAXN);
             $fatal(1);
         end
         $readmemh(file, mem, 0, n - 1);

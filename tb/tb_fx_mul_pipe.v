@@ -6,10 +6,11 @@
  *
  * Reads the vectors of fx_mul (tb/gen_vectors.c, unit mul; record: flags {0,0,0,sat},
  * a, b, y) and streams them, one pair a clock, into fx_mul_pipe, whose exact product
- * goes through fx_round: the pair driven in cycle c must give y and sat in cycle c + 2,
+ * goes through fx_round: the pair driven in cycle c must give y and sat in cycle c + L (2),
  * whatever came before and after it. So the split into partial products is checked
  * against model/fixed.c's fx_mul on every operand pair at W = 8 and on edge and random
- * pairs at wider (and odd) widths, and so is the one-block product (W <= ONE_BLOCK_W). Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * pairs at wider (and odd) widths, and so is the one-block product (W <= ONE_BLOCK_W). Plusargs: +vectors=FILE +n=COUNT
+ * +latency=L (tb/unit_latency.c: model/timing.c) +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
  */
@@ -22,7 +23,7 @@ module tb_fx_mul_pipe;
 
     localparam integer FD  = 4 * ((W + 3) / 4);  // a W-bit field padded to hex digits
     localparam integer RW  = 4 + 3 * FD;         // record width
-    localparam integer LAT = 2;                  // cycles from the operands driven to the product
+    integer            LAT;  // cycles from the operands driven to the result: +latency=, from model/timing.c
 
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
@@ -42,8 +43,9 @@ module tb_fx_mul_pipe;
 
     initial begin
         if (!$value$plusargs("name=%s", name)) name = "tb_fx_mul_pipe";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
-            $display("FAIL %0s: needs +vectors=FILE and +n=1..%0d", name, MAXN);
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
+            !$value$plusargs("latency=%d", LAT) || LAT < 1 || LAT > 64) begin
+            $display("FAIL %0s: needs +vectors=FILE, +n=1..%0d and +latency=1..64", name, MAXN);
             $fatal(1);
         end
         $readmemh(file, mem, 0, n - 1);

@@ -6,8 +6,9 @@
  *
  * Reads the vectors of fx_sqrt (tb/gen_vectors.c, unit sqrt; record: flags {0,0,0,sat},
  * radicand, y) and streams them back to back, a new radicand every clock; the result of
- * the radicand sampled at edge e must be there after edge e + ceil((SQRT_BITS + 1) / STEPS) + 1, whatever
- * came before and after it. Plusargs: +vectors=FILE +n=COUNT +name=NAME.
+ * the radicand driven in cycle c must be there in cycle c + L (model/timing.c, +latency=), whatever
+ * came before and after it. Plusargs: +vectors=FILE +n=COUNT
+ * +latency=L (tb/unit_latency.c: model/timing.c) +name=NAME.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with $fatal
  * (exit status 1) on failure.
  */
@@ -21,7 +22,7 @@ module tb_fx_sqrt_pipe;
     localparam integer FD  = 4 * ((W + 3) / 4);     // a W-bit field padded to hex digits
     localparam integer RD  = 4 * ((2 * W + 3) / 4); // the 2W-bit radicand field
     localparam integer RW  = 4 + RD + FD;           // record width
-    localparam integer LAT = (SQRT_BITS + STEPS) / STEPS + 2; // cycles from a radicand driven to its result
+    integer            LAT;  // cycles from the operands driven to the result: +latency=, from model/timing.c
 
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
@@ -39,8 +40,9 @@ module tb_fx_sqrt_pipe;
 
     initial begin
         if (!$value$plusargs("name=%s", name)) name = "tb_fx_sqrt_pipe";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
-            $display("FAIL %0s: needs +vectors=FILE and +n=1..%0d", name, MAXN);
+        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
+            !$value$plusargs("latency=%d", LAT) || LAT < 1 || LAT > 64) begin
+            $display("FAIL %0s: needs +vectors=FILE, +n=1..%0d and +latency=1..64", name, MAXN);
             $fatal(1);
         end
         $readmemh(file, mem, 0, n - 1);

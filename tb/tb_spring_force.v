@@ -12,22 +12,22 @@
  * when valid = 1 only (the callers write nothing otherwise).
  * Plusargs: +vectors=FILE +n=COUNT +name=NAME.
  *
- * For every vector it checks the latency contract of spring_force.v, counting the
+ * The latency contract (start, busy, done) is tb/serial_latency_check.v's, instantiated here
+ * with L = LATENCY. For every vector the bench checks the values, counting the
  * cycle in which start is high as cycle 0 and sampling the outputs between edges
  * (inputs are driven on the falling edge):
- *   - cycles 1 .. LATENCY-1: busy = 1, done = 0, and f, valid still hold the
+ *   - cycles 1 .. LATENCY-1: f, valid still hold the
  *     previous operation's values; lane k may already change from cycle
  *     LATENCY - DIM + 1 + k (spring_force.v writes the lanes one a cycle, the last in
  *     the done cycle; callers read them at done);
- *   - cycle LATENCY (model/timing.c hw_spring_latency, +latency=): done = 1, busy = 0, and the new
+ *   - cycle LATENCY (model/timing.c hw_spring_latency, +latency=), the done cycle: the new
  *     f, valid;
  *   - the next operation starts back to back in the done cycle, except after every
- *     4th vector (one idle cycle) and every 16th (three): done must have dropped,
- *     busy stay low and the outputs hold.
+ *     4th vector (one idle cycle) and every 16th (three): the outputs hold.
  * While busy, the inputs change to random values (in cycles 1, LATENCY/2 and
  * LATENCY-1), and every 3rd operation holds start high throughout: all must be
  * ignored (the inputs are sampled with start only). After reset, and after a reset
- * in the middle of an operation, busy, done, f, valid must be 0.
+ * in the middle of an operation, f, valid must be 0.
  * Prints one line, "PASS NAME (N vectors)" or "FAIL NAME: ...", and ends with
  * $fatal (exit status 1) on failure or timeout.
  */
@@ -92,6 +92,11 @@ module tb_spring_force;
 
     initial forever #5 clk = !clk;
 
+    // the latency contract (start, busy, done), tb/serial_latency_check.v's
+    wire [31:0] contract_violations;
+    serial_latency_check #(.DEPTH(256)) contract (.clk(clk), .reset(reset), .latency(LATENCY[15:0]), .start(start),
+                                                  .busy(busy), .done(done), .violations(contract_violations));
+
     // Watchdog in clock cycles: every operation needs LATENCY+4 at most.
     initial cycles = 0;
     always @(posedge clk) begin
@@ -153,7 +158,7 @@ module tb_spring_force;
     task check_reset;
         input integer cycle_no;
         begin
-            check(busy === 1'b0 && done === 1'b0 && f_x === {W{1'b0}} && f_y === {W{1'b0}} && f_z === {W{1'b0}} &&
+            check(f_x === {W{1'b0}} && f_y === {W{1'b0}} && f_z === {W{1'b0}} &&
                   valid === 1'b0, cycle_no);
             prev_fx = {W{1'b0}};
             prev_fy = {W{1'b0}};
@@ -166,8 +171,8 @@ module tb_spring_force;
         limit = 1000;
         if (!$value$plusargs("name=%s", name)) name = "tb_spring_force";
         if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
-            !$value$plusargs("latency=%d", LATENCY) || LATENCY < 4) begin
-            $display("FAIL %0s: need +vectors=FILE and +n=1..%0d", name, MAXN);
+            !$value$plusargs("latency=%d", LATENCY) || LATENCY < 4 || LATENCY > 256) begin
+            $display("FAIL %0s: need +vectors=FILE, +n=1..%0d and +latency=4..256", name, MAXN);
             $fatal(1, "bad arguments");
         end
         limit = n * (LATENCY + 4) + 1000;
@@ -220,12 +225,12 @@ module tb_spring_force;
             // before done (lane j from cycle LATENCY - DIM + 1 + j).
             for (k = 1; k < LATENCY; k = k + 1) begin
                 if (k == 1 || k == LATENCY / 2 || k == LATENCY - 1) drive_other(1'b1);
-                check(busy === 1'b1 && done === 1'b0 && held_in(k), k);
+                check(held_in(k), k);
                 @(posedge clk); @(negedge clk);
             end
             // Cycle LATENCY: the result, done.
             start = 1'b0;
-            check(busy === 1'b0 && done === 1'b1 && valid === valid_exp && (valid_exp === 1'b0 ||
+            check(valid === valid_exp && (valid_exp === 1'b0 ||
                   (f_x === fx_exp && f_y === fy_exp && f_z === fz_exp)) && ^{f_x, f_y, f_z} !== 1'bx, LATENCY);
             prev_fx = f_x;
             prev_fy = f_y;
@@ -236,12 +241,14 @@ module tb_spring_force;
                 for (k = 0; k < (i % 16 == 15 ? 3 : 1); k = k + 1) begin
                     drive_other(1'b0);
                     @(posedge clk); @(negedge clk);
-                    check(busy === 1'b0 && done === 1'b0 && held, LATENCY + 1 + k);
+                    check(held, LATENCY + 1 + k);
                 end
             end
         end
-        if (errors != 0) begin
-            $display("FAIL %0s: %0d checks failed; first: %0s", name, errors, first_msg);
+        @(posedge clk); @(negedge clk);  // the last cycle's contract check
+        if (errors != 0 || contract_violations != 0) begin
+            $display("FAIL %0s: %0d value checks and %0d cycles of the latency contract failed; first value check: %0s",
+                     name, errors, contract_violations, errors != 0 ? first_msg : "none");
             $fatal(1, "mismatch");
         end
         $display("PASS %0s (%0d vectors)", name, n);

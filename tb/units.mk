@@ -4,7 +4,7 @@
 # Included by the top Makefile; also works alone from the repository root:
 #     make -f tb/units.mk test-units        # every unit test below
 #     make -f tb/units.mk lint-units        # verilator -Wall and iverilog -Wall, no warnings
-#     make -f tb/units.mk test-units-fault  # shows that a planted fault is caught
+#     make -f tb/units.mk test-units-fault  # shows that planted faults are caught (part of test-units)
 #     make -f tb/units.mk units-datapaths   # the datapath testbenches alone
 # Independent tests run in parallel under make -j.
 #
@@ -52,6 +52,9 @@ UNITS_RTL   := $(foreach u,$(UNITS_NAMES),$(UNITS_ROOT)/rtl/fx_$(u).v) $(UNITS_R
 # what each unit's file needs beside itself (fx_mul rounds with fx_round)
 UNITS_DEPS_mul := rtl/fx_round.v
 UNITS_DEPS_mul_pipe := rtl/fx_round.v
+# the serial units' benches instantiate the latency contract's checker
+UNITS_DEPS_sqrt := tb/serial_latency_check.v
+UNITS_DEPS_div := tb/serial_latency_check.v
 UNITS_GEN   := $(UNITS_BUILD)/gen_vectors
 UNITS_MODEL := $(UNITS_ROOT)/model/fixed.c $(UNITS_ROOT)/model/fixed.h
 
@@ -170,7 +173,19 @@ endef
 
 .PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors units-along
 
-test-units: units-icarus units-verilator units-datapaths units-along
+# The latency a bench checks, from model/timing.c (tb/unit_latency.c): no bench restates a formula.
+UNITS_LAT := $(UNITS_BUILD)/unit_latency
+$(UNITS_LAT): $(UNITS_ROOT)/tb/unit_latency.c $(UNITS_ROOT)/model/timing.c $(UNITS_ROOT)/model/timing.h \
+              $(UNITS_ROOT)/model/hw_params.h $(UNITS_PARAMS_H)
+	@mkdir -p $(dir $@)
+	$(UNITS_CC) $(UNITS_CFLAGS) -I$(dir $(UNITS_PARAMS_H)) -I$(UNITS_ROOT)/model -o $@ $(UNITS_ROOT)/tb/unit_latency.c \
+	    $(UNITS_ROOT)/model/timing.c
+# $(call UNITS_LATENCY_ARG,unit,W,BITS,STEPS): +latency=N for the units that have one (a make
+# expression expanded in the recipe's shell)
+UNITS_LATENCY_UNITS := sqrt div mul_pipe sqrt_pipe div_pipe
+UNITS_LATENCY_ARG = $(if $(filter $(1),$(UNITS_LATENCY_UNITS)),+latency=$$$$($(UNITS_LAT) $(1) $(2) $(3) $(3) 2 $(if $(filter sqrt_pipe div_pipe,$(1)),$(or $(4),1),1) 0 0))
+
+test-units: units-icarus units-verilator units-datapaths units-along test-units-fault
 
 $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 	@mkdir -p $(dir $@)
@@ -188,8 +203,8 @@ $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_
 	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6),$(7)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
-units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
-	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp $(UNITS_LAT)
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) $(call UNITS_LATENCY_ARG,$(2),$(4),$(6),$(7)) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
 
 units-icarus: units-run-$(1)
 endef
@@ -216,8 +231,8 @@ $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_mul_pipe.v $(UNITS_ROOT)/rtl
 	$(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul_pipe,$(2),$(3),$(4)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
-units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
-	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
+units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp $(UNITS_LAT)
+	@$$(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_BUILD)/$(1)/sim.vvp +vectors=$(UNITS_BUILD)/$(1)/vectors.hex +n=$$$$(cat $(UNITS_BUILD)/$(1)/vectors.hex.n) $(call UNITS_LATENCY_ARG,mul_pipe,$(2),$(4)) +name=$(1),$(UNITS_BUILD)/$(1)/run.log,$(1),1)
 
 units-icarus: units-run-$(1)
 endef
@@ -261,7 +276,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 	@mkdir -p $$(dir $$@)
 	$(UNITS_GEN_DP) $(UNITS_DP_GEN_$(2)) random $(3) $(4) $(5) $(6) $(7) $(8) $(9) $$@ > $$@.n
 
-$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH)
+$(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH) $(if $(filter toward spring_force,$(2)),$(UNITS_ROOT)/tb/serial_latency_check.v)
 	@mkdir -p $$(dir $$@)
 	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(and $(8),$(filter %_pipe,$(2))),-Ptb_$(2).STEPS=$(8)) $(if $(9),-Ptb_$(2).MANTISSA=$(9)) -o $$@ $$(filter %.v,$$^)
 
@@ -364,8 +379,8 @@ lint-units:
 	out=$$($(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_ROOT)/rtl -Ptb_fx_mul_pipe.W=18 -o /dev/null tb/tb_fx_mul_pipe.v rtl/fx_mul_pipe.v rtl/fx_round.v tb/ecp5_mult18x18d.v 2>&1); \
 	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
 	$(foreach m,toward toward_pipe spring_force spring_force_pipe,for p in $(UNITS_LINT_PARAMS_DP); do \
-	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v); \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) 2>&1); \
+	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) $(if $(filter toward spring_force,$(m)),tb/serial_latency_check.v); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) $(if $(filter toward spring_force,$(m)),tb/serial_latency_check.v) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
 	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, fx_mul_pipe's ECP5 branch at W = 18 with tb/ecp5_mult18x18d.v, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
 
@@ -373,14 +388,26 @@ lint-units:
 # fx_mul rounds with), built from a copy in the build tree (rtl/ is untouched). The
 # exhaustive W=8 testbench must FAIL.
 UNITS_FAULT_DIR := $(UNITS_BUILD)/planted_fault
-test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex
+test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex $(UNITS_BUILD)/fx_div_w8_f4_b7_exhaustive/vectors.hex $(UNITS_LAT)
 	@mkdir -p $(UNITS_FAULT_DIR)
 	@sed 's/round_up = half & (sticky | q\[0\])/round_up = half/' $(UNITS_ROOT)/rtl/fx_round.v > $(UNITS_FAULT_DIR)/fx_round.v
 	@! cmp -s $(UNITS_ROOT)/rtl/fx_round.v $(UNITS_FAULT_DIR)/fx_round.v || { echo "test-units-fault: could not plant the fault"; exit 1; }
 	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
 	    $(UNITS_ROOT)/tb/tb_fx_mul.v $(UNITS_ROOT)/rtl/fx_mul.v $(UNITS_FAULT_DIR)/fx_round.v
-	@if ( $(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/sim.vvp +vectors=$< +n=$$(cat $<.n) +name=fx_mul_w8_f4_planted_fault,$(UNITS_FAULT_DIR)/run.log,fx_mul_w8_f4_planted_fault,1) ); \
-	then echo "test-units-fault: the planted fault was NOT detected"; exit 1; \
-	else echo "test-units-fault: planted fault (ties rounded up in fx_mul) detected, as it must be"; fi
+	@if ( $(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/sim.vvp +vectors=$< +n=$$(cat $<.n) +name=fx_mul_w8_f4_planted_fault,$(UNITS_FAULT_DIR)/run.log,fx_mul_w8_f4_planted_fault,1) ) \
+	    > $(UNITS_FAULT_DIR)/judge.log 2>&1; \
+	then echo "FAIL units planted fault: ties rounded up in fx_mul were NOT detected"; exit 1; \
+	else echo "PASS units planted fault: ties rounded up in fx_mul detected ($$(grep -m1 '^FAIL' $(UNITS_FAULT_DIR)/run.log | cut -c6-100))"; fi
+	@# the latency contract's checker (tb/serial_latency_check.v): fx_div's busy still high in its done
+	@# cycle, the values all right, must fail the bench through the checker alone
+	@sed 's/assign busy        = busy_q;/assign busy        = busy_q || done_q;/' $(UNITS_ROOT)/rtl/fx_div.v > $(UNITS_FAULT_DIR)/fx_div.v
+	@! cmp -s $(UNITS_ROOT)/rtl/fx_div.v $(UNITS_FAULT_DIR)/fx_div.v || { echo "test-units-fault: could not plant the busy fault"; exit 1; }
+	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_div,8,4,7) -o $(UNITS_FAULT_DIR)/div.vvp \
+	    $(UNITS_ROOT)/tb/tb_fx_div.v $(UNITS_FAULT_DIR)/fx_div.v $(UNITS_ROOT)/tb/serial_latency_check.v
+	@$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/div.vvp +vectors=$(word 2,$^) +n=$$(cat $(word 2,$^).n) \
+	    +latency=$$($(UNITS_LAT) div 8 7 7 2 1 0 0) +name=fx_div_w8_planted_busy > $(UNITS_FAULT_DIR)/div.log 2>&1; \
+	if grep -q '^FAIL latency contract' $(UNITS_FAULT_DIR)/div.log && grep -q ' 0 value checks and [1-9]' $(UNITS_FAULT_DIR)/div.log; \
+	then echo "PASS units planted fault: fx_div's busy in its done cycle caught by the latency contract alone ($$(grep -m1 '^FAIL latency' $(UNITS_FAULT_DIR)/div.log | cut -c6-150))"; \
+	else echo "FAIL units planted fault: fx_div's busy in its done cycle was NOT caught by the latency contract (see $(UNITS_FAULT_DIR)/div.log)"; exit 1; fi
 
 .DEFAULT_GOAL := $(UNITS_SAVED_GOAL)
