@@ -171,7 +171,8 @@ else \
 fi
 endef
 
-.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors units-along
+.PHONY: test-units lint-units test-units-fault units-icarus units-verilator units-datapaths units-vectors units-along \
+        units-latency-formulas
 
 # The latency a bench checks, from model/timing.c (tb/unit_latency.c): no bench restates a formula.
 UNITS_LAT := $(UNITS_BUILD)/unit_latency
@@ -185,7 +186,27 @@ $(UNITS_LAT): $(UNITS_ROOT)/tb/unit_latency.c $(UNITS_ROOT)/model/timing.c $(UNI
 UNITS_LATENCY_UNITS := sqrt div mul_pipe sqrt_pipe div_pipe
 UNITS_LATENCY_ARG = $(if $(filter $(1),$(UNITS_LATENCY_UNITS)),+latency=$$$$($(UNITS_LAT) $(1) $(2) $(3) $(3) 2 $(if $(filter sqrt_pipe div_pipe,$(1)),$(or $(4),1),1) 0 0))
 
-test-units: units-icarus units-verilator units-datapaths units-along test-units-fault
+test-units: units-icarus units-verilator units-datapaths units-along test-units-fault units-latency-formulas
+
+# rtl/pipe_latency.vh's functions (the RTL's, the unit benches' and the formal properties'
+# latencies) against model/timing.c's (tb/unit_latency.c) on a grid of configurations, line for
+# line; then the same with a copy of the header whose div_latency is one cycle long, which must fail.
+UNITS_LF_DIR := $(UNITS_BUILD)/latency_formulas
+define UNITS_LF_RUN
+$(UNITS_IVERILOG) -g2005 -Wall -I$(1) -o $(UNITS_LF_DIR)/$(2).vvp $(UNITS_ROOT)/tb/latency_formulas.v && \
+$(UNITS_VVP) -n $(UNITS_LF_DIR)/$(2).vvp | grep -v '^$$finish' > $(UNITS_LF_DIR)/$(2).rtl && \
+sed 's/ [0-9]*$$//' $(UNITS_LF_DIR)/$(2).rtl | $(UNITS_LAT) - > $(UNITS_LF_DIR)/$(2).model && \
+cmp -s $(UNITS_LF_DIR)/$(2).rtl $(UNITS_LF_DIR)/$(2).model
+endef
+units-latency-formulas: $(UNITS_LAT) $(UNITS_ROOT)/tb/latency_formulas.v $(UNITS_ROOT)/rtl/pipe_latency.vh
+	@mkdir -p $(UNITS_LF_DIR)/fault
+	@if $(call UNITS_LF_RUN,$(UNITS_ROOT)/rtl,grid); then \
+	    echo "PASS units-latency-formulas: rtl/pipe_latency.vh equals model/timing.c on $$(wc -l < $(UNITS_LF_DIR)/grid.rtl) unit configurations"; \
+	else echo "FAIL units-latency-formulas: rtl/pipe_latency.vh and model/timing.c differ: $$(diff $(UNITS_LF_DIR)/grid.rtl $(UNITS_LF_DIR)/grid.model | head -3 | tr '\n' ' ')"; exit 1; fi
+	@sed 's/div_latency = bits + 2;/div_latency = bits + 3;/' $(UNITS_ROOT)/rtl/pipe_latency.vh > $(UNITS_LF_DIR)/fault/pipe_latency.vh
+	@if $(call UNITS_LF_RUN,$(UNITS_LF_DIR)/fault,fault); then \
+	    echo "FAIL units-latency-formulas: a planted fault (div_latency one cycle long) was NOT caught"; exit 1; \
+	else echo "PASS units-latency-formulas: a planted fault (div_latency one cycle long) is caught ($$(diff $(UNITS_LF_DIR)/fault.rtl $(UNITS_LF_DIR)/fault.model | grep -c '^<') lines differ)"; fi
 
 $(UNITS_GEN): $(UNITS_ROOT)/tb/gen_vectors.c $(UNITS_MODEL)
 	@mkdir -p $(dir $@)

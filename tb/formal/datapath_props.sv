@@ -11,63 +11,10 @@
 //            arbitrary value) into both in the second cycle after reset, any other traffic
 //            into the pipe before and after it; the pipe's result and flag for it equal
 //            the serial unit's (the result compared where the flag says there is one).
-// The latencies are the units' headers' (and model/timing.c's):
-//   spring_force       SQRT_BITS + DIM DIV_BITS + 5 DIM + 15
-//   spring_force_pipe  SQRT_BITS + DIV_BITS + 24
-//   toward_prev        2 SQRT_BITS + DIM DIV_BITS + 7 DIM + 20
-//   toward_prev_pipe   2 SQRT_BITS + DIV_BITS + 34
+// The latencies are rtl/pipe_latency.vh's functions (which units-latency-formulas checks
+// against model/timing.c); the handshake's checker is tb/serial_latency_check.v (the unit
+// benches' too), the valid bits' tb/formal/pipe_vt_check.sv (toward_props.sv's too).
 `default_nettype none
-
-// A start accepted by a serial unit, and its done LAT cycles later.
-module serial_hs_check #(parameter integer LAT = 4) (
-    input wire clk, input wire reset, input wire start, input wire busy, input wire done
-);
-    reg f_init = 1'b1;
-    always @(posedge clk) f_init <= 1'b0;
-    always @* if (f_init) assume (reset);
-    wire accept = start && !busy && !reset;
-    reg [LAT-1:0] pend;
-    reg reset_prev;
-    always @(posedge clk) begin
-        pend <= reset ? {LAT{1'b0}} : {pend[LAT-2:0], accept};
-        reset_prev <= reset;
-    end
-    always @* if (!f_init) begin
-        if (reset_prev) assert (!busy && !done);
-        else begin
-            assert (done == pend[LAT-1]);
-            assert (busy == |pend[LAT-2:0]);
-            assert ($onehot0(pend));
-        end
-        cover (done);
-    end
-endmodule
-
-// A pipelined unit's out_valid and out_tag: in_valid and in_tag LAT cycles earlier.
-module pipe_vt_check #(parameter integer LAT = 4, parameter integer TAG_W = 3) (
-    input wire clk, input wire reset, input wire in_valid, input wire [TAG_W-1:0] in_tag,
-    input wire out_valid, input wire [TAG_W-1:0] out_tag
-);
-    reg f_init = 1'b1;
-    always @(posedge clk) f_init <= 1'b0;
-    always @* if (f_init) assume (reset);
-    reg [LAT-1:0]   v_in;
-    reg [TAG_W-1:0] tag_in [0:LAT-1];
-    reg             reset_prev;
-    integer i;
-    always @(posedge clk) begin
-        v_in <= reset ? {LAT{1'b0}} : {v_in[LAT-2:0], in_valid};
-        tag_in[0] <= in_tag;
-        for (i = 1; i < LAT; i = i + 1) tag_in[i] <= tag_in[i-1];
-        reset_prev <= reset;
-    end
-    always @* if (!f_init) begin
-        if (reset_prev) assert (!out_valid);
-        else assert (out_valid == v_in[LAT-1]);
-        if (out_valid && !reset_prev) assert (out_tag == tag_in[LAT-1]);
-        cover (out_valid);
-    end
-endmodule
 
 // One operation through a serial unit (done LAT_S after start) and a pipelined one (out
 // LAT_P after in): both results are kept, and compared once both are out.
@@ -118,13 +65,15 @@ module spring_hs #(
     input wire [DIM*W-1:0] a, input wire [DIM*W-1:0] a_p, input wire [DIM*W-1:0] b, input wire [DIM*W-1:0] b_p,
     input wire [W-1:0] rest_len, input wire [W-1:0] ks, input wire [W-1:0] kd
 );
-    localparam integer LAT = SQRT_BITS + DIM * DIV_BITS + 5 * DIM + 15;
+`include "pipe_latency.vh"
+    localparam integer LAT = spring_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0);
     wire busy, done, valid;
     wire [DIM*W-1:0] f;
     spring_force #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) dut (
         .clk(clk), .reset(reset), .start(start), .pos_a(a), .prev_a(a_p), .pos_b(b), .prev_b(b_p),
         .rest_len(rest_len), .ks(ks), .kd(kd), .busy(busy), .done(done), .f(f), .valid(valid));
-    serial_hs_check #(.LAT(LAT)) chk (.clk(clk), .reset(reset), .start(start), .busy(busy), .done(done));
+    serial_latency_check #(.DEPTH(LAT)) chk (.clk(clk), .reset(reset), .latency(LAT[15:0]), .start(start), .busy(busy),
+                                             .done(done), .violations());
     wire unused = &{1'b0, f, valid};
 endmodule
 
@@ -136,7 +85,8 @@ module spring_pipe_vt #(
     input wire [DIM*W-1:0] in_a, input wire [DIM*W-1:0] in_ap, input wire [DIM*W-1:0] in_b, input wire [DIM*W-1:0] in_bp,
     input wire [W-1:0] in_rest, input wire [W-1:0] in_ks, input wire [W-1:0] in_kd, input wire [TAG_W-1:0] in_tag
 );
-    localparam integer LAT = SQRT_BITS + DIV_BITS + 24;
+`include "pipe_latency.vh"
+    localparam integer LAT = spring_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     wire out_valid, out_ok;
     wire [DIM*W-1:0] out_f;
     wire [TAG_W-1:0] out_tag;
@@ -157,8 +107,9 @@ module spring_miter #(
     input wire [DIM*W-1:0] in_a, input wire [DIM*W-1:0] in_ap, input wire [DIM*W-1:0] in_b, input wire [DIM*W-1:0] in_bp,
     input wire [W-1:0] in_rest, input wire [W-1:0] in_ks, input wire [W-1:0] in_kd
 );
-    localparam integer LAT_S = SQRT_BITS + DIM * DIV_BITS + 5 * DIM + 15;
-    localparam integer LAT_P = SQRT_BITS + DIV_BITS + 24;
+`include "pipe_latency.vh"
+    localparam integer LAT_S = spring_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0);
+    localparam integer LAT_P = spring_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     (* anyconst *) reg [DIM*W-1:0] op_a, op_ap, op_b, op_bp;
     (* anyconst *) reg [W-1:0]     op_rest, op_ks, op_kd;
     wire f_init, start, busy, done, valid, out_valid, out_ok;
@@ -188,13 +139,15 @@ module prev_hs #(
     input wire [DIM*W-1:0] p, input wire [DIM*W-1:0] c, input wire [DIM*W-1:0] pp, input wire [DIM*W-1:0] pc,
     input wire [W-1:0] rest_len
 );
-    localparam integer LAT = 2 * SQRT_BITS + DIM * DIV_BITS + 7 * DIM + 20;
+`include "pipe_latency.vh"
+    localparam integer LAT = toward_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0, 1);
     wire busy, done, valid;
     wire [DIM*W-1:0] t;
     toward_prev #(.W(W), .F(F), .SQRT_BITS(SQRT_BITS), .DIV_BITS(DIV_BITS), .DIM(DIM)) dut (
         .clk(clk), .reset(reset), .start(start), .excess(excess), .p(p), .c(c), .pp(pp), .pc(pc),
         .rest_len(rest_len), .busy(busy), .done(done), .t(t), .valid(valid));
-    serial_hs_check #(.LAT(LAT)) chk (.clk(clk), .reset(reset), .start(start), .busy(busy), .done(done));
+    serial_latency_check #(.DEPTH(LAT)) chk (.clk(clk), .reset(reset), .latency(LAT[15:0]), .start(start), .busy(busy),
+                                             .done(done), .violations());
     wire unused = &{1'b0, t, valid};
 endmodule
 
@@ -207,7 +160,8 @@ module prev_pipe_vt #(
     input wire [DIM*W-1:0] in_p, input wire [DIM*W-1:0] in_c, input wire [DIM*W-1:0] in_pp, input wire [DIM*W-1:0] in_pc,
     input wire [W-1:0] in_rest, input wire [TAG_W-1:0] in_tag
 );
-    localparam integer LAT = 2 * SQRT_BITS + DIV_BITS + 34;
+`include "pipe_latency.vh"
+    localparam integer LAT = toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     wire out_valid, out_ok;
     wire [DIM*W-1:0] out_t, out_p, out_c;
     wire [TAG_W-1:0] out_tag;
@@ -229,8 +183,9 @@ module prev_miter #(
     input wire [DIM*W-1:0] in_p, input wire [DIM*W-1:0] in_c, input wire [DIM*W-1:0] in_pp, input wire [DIM*W-1:0] in_pc,
     input wire [W-1:0] in_rest
 );
-    localparam integer LAT_S = 2 * SQRT_BITS + DIM * DIV_BITS + 7 * DIM + 20;
-    localparam integer LAT_P = 2 * SQRT_BITS + DIV_BITS + 34;
+`include "pipe_latency.vh"
+    localparam integer LAT_S = toward_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0, 1);
+    localparam integer LAT_P = toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     (* anyconst *) reg [DIM*W-1:0] op_p, op_c, op_pp, op_pc;
     (* anyconst *) reg [W-1:0]     op_rest;
     (* anyconst *) reg             op_excess;

@@ -37,7 +37,9 @@ module fx_div_props #(
 
     localparam integer M   = W - 1;
     localparam integer LSB = M - DIV_BITS;
-    localparam integer LAT = DIV_BITS + 2;    // cycles from the start cycle to the done cycle
+`include "pipe_latency.vh"
+    localparam integer LAT   = div_latency(DIV_BITS);   // the start cycle to the done cycle (model/timing.c's)
+    localparam [15:0]  LAT16 = LAT[15:0];
     localparam integer XW  = 2 * W + 2;       // wide enough for (2r + L) den < 2^(2W+1) and 2 num 2^F
 
     wire         busy, done, sat, dbz;
@@ -51,18 +53,16 @@ module fx_div_props #(
     always @(posedge clk) f_init <= 1'b0;
     always @* if (f_init) assume (reset);
 
-    // ---- the handshake: pend[i] = a start was accepted i+1 cycles ago ----
+    // ---- the handshake: the latency contract (tb/serial_latency_check.v, the unit benches' too) ----
+    serial_latency_check #(.DEPTH(LAT)) contract (.clk(clk), .reset(reset), .latency(LAT16), .start(start),
+                                                  .busy(busy), .done(done), .violations());
     wire          accept = start && !busy && !reset;
-    reg [LAT-1:0] pend;
     reg [W-1:0]   num_q, den_q;             // the operands of the operation in flight
-    always @(posedge clk) begin
-        if (reset) pend <= {LAT{1'b0}};
-        else       pend <= {pend[LAT-2:0], accept};
+    always @(posedge clk)
         if (accept) begin
             num_q <= num;
             den_q <= den;
         end
-    end
 
     reg [W-1:0] result_prev;
     reg         sat_prev, dbz_prev, reset_prev;
@@ -74,14 +74,8 @@ module fx_div_props #(
     end
 
     always @* if (!f_init) begin
-        if (reset_prev) begin
-            assert (!busy && !done && result == {W{1'b0}} && !sat && !dbz);
-        end else begin
-            assert (done == pend[LAT-1]);
-            assert (busy == |pend[LAT-2:0]);
-            assert ($onehot0(pend));
-            if (!done) assert (result == result_prev && sat == sat_prev && dbz == dbz_prev);
-        end
+        if (reset_prev) assert (result == {W{1'b0}} && !sat && !dbz);
+        else if (!done) assert (result == result_prev && sat == sat_prev && dbz == dbz_prev);
     end
 
     // ---- the result: a rounded quotient ----

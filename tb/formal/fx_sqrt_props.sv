@@ -28,7 +28,9 @@ module fx_sqrt_props #(
 );
     localparam integer M   = W - 1;
     localparam integer LSB = M - SQRT_BITS;
-    localparam integer LAT = SQRT_BITS + 2;   // cycles from the start cycle to the done cycle
+`include "pipe_latency.vh"
+    localparam integer  LAT   = sqrt_latency(SQRT_BITS);   // the start cycle to the done cycle (model/timing.c's)
+    localparam [15:0]   LAT16 = LAT[15:0];
     localparam integer XW  = 2 * W + 4;       // wide enough for (2^(M+1) + L)^2 and 4x
 
     wire         busy, done, sat;
@@ -43,15 +45,12 @@ module fx_sqrt_props #(
     always @(posedge clk) f_init <= 1'b0;
     always @* if (f_init) assume (reset);
 
-    // ---- the handshake: pend[i] = a start was accepted i+1 cycles ago ----
+    // ---- the handshake: the latency contract (tb/serial_latency_check.v, the unit benches' too) ----
+    serial_latency_check #(.DEPTH(LAT)) contract (.clk(clk), .reset(reset), .latency(LAT16), .start(start),
+                                                  .busy(busy), .done(done), .violations());
     wire          accept = start && !busy && !reset;
-    reg [LAT-1:0] pend;
     reg [2*W-1:0] x_q;                      // the radicand of the operation in flight
-    always @(posedge clk) begin
-        if (reset) pend <= {LAT{1'b0}};
-        else       pend <= {pend[LAT-2:0], accept};
-        if (accept) x_q <= radicand;
-    end
+    always @(posedge clk) if (accept) x_q <= radicand;
 
     reg [W-1:0] result_prev;
     reg         sat_prev, reset_prev;
@@ -62,14 +61,8 @@ module fx_sqrt_props #(
     end
 
     always @* if (!f_init) begin
-        if (reset_prev) begin
-            assert (!busy && !done && result == {W{1'b0}} && !sat);
-        end else begin
-            assert (done == pend[LAT-1]);
-            assert (busy == |pend[LAT-2:0]);
-            assert ($onehot0(pend));          // one operation at a time
-            if (!done) assert (result == result_prev && sat == sat_prev);
-        end
+        if (reset_prev) assert (result == {W{1'b0}} && !sat);
+        else if (!done) assert (result == result_prev && sat == sat_prev);
     end
 
     // ---- the result: a rounded root ----
