@@ -1,4 +1,4 @@
-// pipe_latency.vh - the latencies of the datapaths and their root and divider, written once for
+// pipe_latency.vh - the latencies of the pipelined root and divider, written once for
 // the modules that time their operands around them (included in module bodies, like
 // fx_div_step.vh). model/timing.c has the same formulas for the cycle model.
 //
@@ -40,29 +40,3 @@ function integer spring_pipe_latency(input integer sqrt_bits, input integer div_
                                        : sqrt_pipe_latency(sqrt_bits, steps) + div_pipe_latency(div_bits, steps) + 20;
 endfunction
 
-
-// The serial units, start cycle to done cycle (model/timing.c hw_sqrt_latency, hw_div_latency,
-// hw_toward_latency, hw_spring_latency; tb/serial_latency_check.v checks them in the unit benches
-// and the formal properties, and units-latency-formulas checks these functions against timing.c).
-function integer sqrt_latency(input integer bits);
-    sqrt_latency = bits + 2;
-endfunction
-
-function integer div_latency(input integer bits);
-    div_latency = bits + 2;
-endfunction
-
-// toward.v (toward_prev.v with projection): one operation through the pipe when mantissa > 0
-function integer toward_latency(input integer sqrt_bits, input integer div_bits, input integer dim,
-                                input integer steps, input integer mantissa, input integer projection);
-    toward_latency = mantissa > 0 ? (projection ? toward_prev_pipe_latency(sqrt_bits, div_bits, steps, mantissa)
-                                                : toward_pipe_latency(sqrt_bits, div_bits, steps, mantissa)) + 1
-                   : projection ? 2 * sqrt_bits + dim * div_bits + 7 * dim + 20
-                   : sqrt_latency(sqrt_bits) + div_latency(div_bits) + 2 * dim + 6;
-endfunction
-
-function integer spring_latency(input integer sqrt_bits, input integer div_bits, input integer dim,
-                                input integer steps, input integer mantissa);
-    spring_latency = mantissa > 0 ? spring_pipe_latency(sqrt_bits, div_bits, steps, mantissa) + 1
-                                  : sqrt_bits + dim * div_bits + 5 * dim + 15;
-endfunction

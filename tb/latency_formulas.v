@@ -2,7 +2,8 @@
 `timescale 1ns / 1ps
 
 /*
- * latency_formulas - rtl/pipe_latency.vh's latency functions over a grid of configurations,
+ * latency_formulas - the latency functions of rtl/pipe_latency.vh and tb/serial_latency.vh over a
+ * grid of configurations,
  * one line each: "UNIT W SQRT_BITS DIV_BITS DIM STEPS MANTISSA PROJECTION" and the function's
  * latency (the words tb/unit_latency.c reads, which computes the same from model/timing.c).
  * units-latency-formulas compares the two outputs line for line: the Verilog formulas the RTL,
@@ -11,6 +12,7 @@
  */
 module latency_formulas;
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     integer sb, db, dim, steps, mb, proj, i, j;
     integer sbs [0:4];
     integer dbs [0:3];

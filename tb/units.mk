@@ -188,23 +188,26 @@ UNITS_LATENCY_ARG = $(if $(filter $(1),$(UNITS_LATENCY_UNITS)),+latency=$$$$($(U
 
 test-units: units-icarus units-verilator units-datapaths units-along test-units-fault units-latency-formulas
 
-# rtl/pipe_latency.vh's functions (the RTL's, the unit benches' and the formal properties'
-# latencies) against model/timing.c's (tb/unit_latency.c) on a grid of configurations, line for
+# rtl/pipe_latency.vh's and tb/serial_latency.vh's functions (the RTL's, the unit benches' and the
+# formal properties' latencies) against model/timing.c's (tb/unit_latency.c) on a grid of configurations, line for
 # line; then the same with a copy of the header whose div_latency is one cycle long, which must fail.
 UNITS_LF_DIR := $(UNITS_BUILD)/latency_formulas
+# $(call UNITS_LF_RUN,include dir searched first,name): both lists written (a compile error fails it)
 define UNITS_LF_RUN
-$(UNITS_IVERILOG) -g2005 -Wall -I$(1) -o $(UNITS_LF_DIR)/$(2).vvp $(UNITS_ROOT)/tb/latency_formulas.v && \
+$(UNITS_IVERILOG) -g2005 -Wall -I$(1) -I$(UNITS_ROOT)/tb -I$(UNITS_ROOT)/rtl -o $(UNITS_LF_DIR)/$(2).vvp $(UNITS_ROOT)/tb/latency_formulas.v && \
 $(UNITS_VVP) -n $(UNITS_LF_DIR)/$(2).vvp | grep -v '^$$finish' > $(UNITS_LF_DIR)/$(2).rtl && \
 sed 's/ [0-9]*$$//' $(UNITS_LF_DIR)/$(2).rtl | $(UNITS_LAT) - > $(UNITS_LF_DIR)/$(2).model && \
-cmp -s $(UNITS_LF_DIR)/$(2).rtl $(UNITS_LF_DIR)/$(2).model
+[ -s $(UNITS_LF_DIR)/$(2).rtl ]
 endef
-units-latency-formulas: $(UNITS_LAT) $(UNITS_ROOT)/tb/latency_formulas.v $(UNITS_ROOT)/rtl/pipe_latency.vh
-	@mkdir -p $(UNITS_LF_DIR)/fault
-	@if $(call UNITS_LF_RUN,$(UNITS_ROOT)/rtl,grid); then \
-	    echo "PASS units-latency-formulas: rtl/pipe_latency.vh equals model/timing.c on $$(wc -l < $(UNITS_LF_DIR)/grid.rtl) unit configurations"; \
-	else echo "FAIL units-latency-formulas: rtl/pipe_latency.vh and model/timing.c differ: $$(diff $(UNITS_LF_DIR)/grid.rtl $(UNITS_LF_DIR)/grid.model | head -3 | tr '\n' ' ')"; exit 1; fi
-	@sed 's/div_latency = bits + 2;/div_latency = bits + 3;/' $(UNITS_ROOT)/rtl/pipe_latency.vh > $(UNITS_LF_DIR)/fault/pipe_latency.vh
-	@if $(call UNITS_LF_RUN,$(UNITS_LF_DIR)/fault,fault); then \
+units-latency-formulas: $(UNITS_LAT) $(UNITS_ROOT)/tb/latency_formulas.v $(UNITS_ROOT)/rtl/pipe_latency.vh $(UNITS_ROOT)/tb/serial_latency.vh
+	@rm -rf $(UNITS_LF_DIR) && mkdir -p $(UNITS_LF_DIR)/fault
+	@if $(call UNITS_LF_RUN,$(UNITS_ROOT)/tb,grid) && cmp -s $(UNITS_LF_DIR)/grid.rtl $(UNITS_LF_DIR)/grid.model; then \
+	    echo "PASS units-latency-formulas: rtl/pipe_latency.vh and tb/serial_latency.vh equal model/timing.c on $$(wc -l < $(UNITS_LF_DIR)/grid.rtl) unit configurations"; \
+	else echo "FAIL units-latency-formulas: rtl/pipe_latency.vh or tb/serial_latency.vh and model/timing.c differ: $$(diff $(UNITS_LF_DIR)/grid.rtl $(UNITS_LF_DIR)/grid.model 2>&1 | head -3 | tr '\n' ' ')"; exit 1; fi
+	@sed 's/div_latency = bits + 2;/div_latency = bits + 3;/' $(UNITS_ROOT)/tb/serial_latency.vh > $(UNITS_LF_DIR)/fault/serial_latency.vh
+	@if ! ( $(call UNITS_LF_RUN,$(UNITS_LF_DIR)/fault,fault) ); then \
+	    echo "FAIL units-latency-formulas: the planted fault's header did not build"; exit 1; \
+	elif cmp -s $(UNITS_LF_DIR)/fault.rtl $(UNITS_LF_DIR)/fault.model; then \
 	    echo "FAIL units-latency-formulas: a planted fault (div_latency one cycle long) was NOT caught"; exit 1; \
 	else echo "PASS units-latency-formulas: a planted fault (div_latency one cycle long) is caught ($$(diff $(UNITS_LF_DIR)/fault.rtl $(UNITS_LF_DIR)/fault.model | grep -c '^<') lines differ)"; fi
 

@@ -11,7 +11,7 @@
 //            arbitrary value) into both in the second cycle after reset, any other traffic
 //            into the pipe before and after it; the pipe's result and flag for it equal
 //            the serial unit's (the result compared where the flag says there is one).
-// The latencies are rtl/pipe_latency.vh's functions (which units-latency-formulas checks
+// The latencies are rtl/pipe_latency.vh's and tb/serial_latency.vh's functions (which units-latency-formulas checks
 // against model/timing.c); the handshake's checker is tb/serial_latency_check.v (the unit
 // benches' too), the valid bits' tb/formal/pipe_vt_check.sv (toward_props.sv's too).
 `default_nettype none
@@ -66,6 +66,7 @@ module spring_hs #(
     input wire [W-1:0] rest_len, input wire [W-1:0] ks, input wire [W-1:0] kd
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT = spring_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0);
     wire busy, done, valid;
     wire [DIM*W-1:0] f;
@@ -86,6 +87,7 @@ module spring_pipe_vt #(
     input wire [W-1:0] in_rest, input wire [W-1:0] in_ks, input wire [W-1:0] in_kd, input wire [TAG_W-1:0] in_tag
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT = spring_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     wire out_valid, out_ok;
     wire [DIM*W-1:0] out_f;
@@ -108,6 +110,7 @@ module spring_miter #(
     input wire [W-1:0] in_rest, input wire [W-1:0] in_ks, input wire [W-1:0] in_kd
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT_S = spring_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0);
     localparam integer LAT_P = spring_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     (* anyconst *) reg [DIM*W-1:0] op_a, op_ap, op_b, op_bp;
@@ -140,6 +143,7 @@ module prev_hs #(
     input wire [W-1:0] rest_len
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT = toward_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0, 1);
     wire busy, done, valid;
     wire [DIM*W-1:0] t;
@@ -161,6 +165,7 @@ module prev_pipe_vt #(
     input wire [W-1:0] in_rest, input wire [TAG_W-1:0] in_tag
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT = toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     wire out_valid, out_ok;
     wire [DIM*W-1:0] out_t, out_p, out_c;
@@ -184,6 +189,7 @@ module prev_miter #(
     input wire [W-1:0] in_rest
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT_S = toward_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0, 1);
     localparam integer LAT_P = toward_prev_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     (* anyconst *) reg [DIM*W-1:0] op_p, op_c, op_pp, op_pc;

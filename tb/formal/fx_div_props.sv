@@ -38,6 +38,7 @@ module fx_div_props #(
     localparam integer M   = W - 1;
     localparam integer LSB = M - DIV_BITS;
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT   = div_latency(DIV_BITS);   // the start cycle to the done cycle (model/timing.c's)
     localparam [15:0]  LAT16 = LAT[15:0];
     localparam integer XW  = 2 * W + 2;       // wide enough for (2r + L) den < 2^(2W+1) and 2 num 2^F

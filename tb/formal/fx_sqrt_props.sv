@@ -29,6 +29,7 @@ module fx_sqrt_props #(
     localparam integer M   = W - 1;
     localparam integer LSB = M - SQRT_BITS;
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer  LAT   = sqrt_latency(SQRT_BITS);   // the start cycle to the done cycle (model/timing.c's)
     localparam [15:0]   LAT16 = LAT[15:0];
     localparam integer XW  = 2 * W + 4;       // wide enough for (2^(M+1) + L)^2 and 4x

@@ -13,7 +13,7 @@
 //                  the pipe before and after it; the pipe's out_t and out_ok for it equal
 //                  toward's t and valid. (One start cycle: each compared cycle costs the
 //                  solver minutes, the root, divider and multipliers of both datapaths.)
-// The latencies are rtl/pipe_latency.vh's (checked against model/timing.c by
+// The latencies are rtl/pipe_latency.vh's and tb/serial_latency.vh's (checked against model/timing.c by
 // units-latency-formulas); the checkers tb/serial_latency_check.v and tb/formal/pipe_vt_check.sv.
 `default_nettype none
 
@@ -25,6 +25,7 @@ module toward_hs #(
     input wire [DIM*W-1:0] p, input wire [DIM*W-1:0] c, input wire [W-1:0] rest_len
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT = toward_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0, 0);
     wire busy, done, valid;
     wire [DIM*W-1:0] t;
@@ -46,6 +47,7 @@ module toward_pipe_vt #(
     input wire [TAG_W-1:0] in_tag
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT = toward_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     wire out_valid, out_ok;
     wire [DIM*W-1:0] out_t, out_p, out_c;
@@ -69,6 +71,7 @@ module toward_miter #(
     input wire [DIM*W-1:0] in_p, input wire [DIM*W-1:0] in_c, input wire [W-1:0] in_rest
 );
 `include "pipe_latency.vh"
+`include "serial_latency.vh"
     localparam integer LAT_S = toward_latency(SQRT_BITS, DIV_BITS, DIM, 1, 0, 0);
     localparam integer LAT_P = toward_pipe_latency(SQRT_BITS, DIV_BITS, 1, 0);
     (* anyconst *) reg [DIM*W-1:0] op_p, op_c;
