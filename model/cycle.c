@@ -344,7 +344,7 @@ static bool pair_write_a(cyc_model *c, int e, bool *written, fx_t b_new[3])
  * not positions, so nothing shows on the write-back lanes); else the pairwise
  * constraints (pair_edge() on the link's rod).
  */
-static void pair_seq_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring, bool *written)
+static void pair_sequencer_edge(cyc_model *c, cyc_pair_seq *q, bool start, bool spring, bool *written)
 {
     const hw_params *hp = &c->hp;
     const int k = hp->k, n = hp->m * k, iter = spring ? 1 : hp->iter;
@@ -674,44 +674,48 @@ static void graph_stream_edge(cyc_model *c, bool start, bool *written)
     }
 }
 
-void cyc_edge(cyc_model *c, const cyc_inputs *in)
+/*
+ * One clock edge, block by block: each function below is one RTL block (named after its
+ * module), computing its next state from its state before the edge and the signals of this
+ * cycle; cyc_edge composes them in the order that keeps every read before the writes it
+ * must not see (the storage's writes first, the registers last).
+ */
+
+/* frame_ctrl's combinational signals of this cycle (and the sequencers' done flags it reads),
+   from the state before the edge. */
+typedef struct {
+    bool cmd_init, frame_start, verlet_end, seq_done, force_done, body_end, ground_start, substep_end,
+        last_substep, scan_end, substep_start, force_start, body_start, verlet_start, seq_start;
+} cyc_ctrl;
+
+static void frame_ctrl_signals(const cyc_model *c, const cyc_inputs *in, cyc_ctrl *x)
 {
     const hw_params *hp = &c->hp;
-    const fx_format *f = &c->s.fmt;
-    const int m = hp->m, k = hp->k, n = m * k;
-    bool written[CYC_MAX_LANES] = {false};
-    uint32_t rd_u = in->rd_addr >> hp->iw & ((1u << hp->uw) - 1), rd_n = in->rd_addr & ((1u << hp->iw) - 1);
-
-    c->cycle++;
-    c->rd_u_q2 = c->rd_u_q; /* strand_core rd_u_q, rd_u_q2: not reset, follow rd_addr */
-    c->rd_u_q = rd_u;
-    if (in->reset) {
-        reset_all(c);
-        return;
-    }
-
-    /* Combinational signals of this cycle, from the state before the edge. */
-    /* frame_ctrl: CMD starts the init walk of a chain (a graph has none); a step in the
-     * same cycle wins */
-    const bool cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph && !in->step;
-    const bool frame_start = c->phase == PH_IDLE && in->step;
-    const bool verlet_end = c->phase == PH_VERLET && c->done;
-    const bool seq_done = graph_streams(hp) ? c->gs_done : hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
-    const bool force_done = chain_streams(hp) ? c->sp_done : c->force.done;
-    const bool body_end = hp->en_constraints ? c->phase == PH_CONSTRAIN && seq_done : verlet_end;
-    const bool ground_start = body_end && hp->en_ground;
-    const bool substep_end = hp->en_ground ? c->phase == PH_GROUND && c->done : body_end;
-    const bool last_substep = c->substep == hp->substeps - 1;
-    const bool scan_end = hp->grab && c->phase == PH_GRAB && c->scan_i == n;
-    const bool substep_start = (hp->grab ? scan_end : frame_start) || (substep_end && !last_substep);
-    const bool force_start = substep_start && hp->en_springs;
+    const int n = hp->m * hp->k;
+    /* CMD starts the init walk of a chain (a graph has none); a step in the same cycle wins */
+    x->cmd_init = in->cfg_we && in->cfg_addr == STRAND_REG_CMD && (in->cfg_data & 1) && !hp->graph && !in->step;
+    x->frame_start = c->phase == PH_IDLE && in->step;
+    x->verlet_end = c->phase == PH_VERLET && c->done;
+    x->seq_done = graph_streams(hp) ? c->gs_done : hp->arch ? c->st_done : hp->rule ? c->pair.done : c->sq_done;
+    x->force_done = chain_streams(hp) ? c->sp_done : c->force.done;
+    x->body_end = hp->en_constraints ? c->phase == PH_CONSTRAIN && x->seq_done : x->verlet_end;
+    x->ground_start = x->body_end && hp->en_ground;
+    x->substep_end = hp->en_ground ? c->phase == PH_GROUND && c->done : x->body_end;
+    x->last_substep = c->substep == hp->substeps - 1;
+    x->scan_end = hp->grab && c->phase == PH_GRAB && c->scan_i == n;
+    x->substep_start = (hp->grab ? x->scan_end : x->frame_start) || (x->substep_end && !x->last_substep);
+    x->force_start = x->substep_start && hp->en_springs;
     /* FUSE: no Verlet pass; the constraint pass starts in its place and takes the step */
-    const bool body_start = (substep_start && !hp->en_springs) || (c->phase == PH_FORCE && force_done);
-    const bool verlet_start = body_start && !hp->fuse;
-    const bool seq_start = hp->fuse ? body_start : verlet_end && hp->en_constraints;
+    x->body_start = (x->substep_start && !hp->en_springs) || (c->phase == PH_FORCE && x->force_done);
+    x->verlet_start = x->body_start && !hp->fuse;
+    x->seq_start = hp->fuse ? x->body_start : x->verlet_end && hp->en_constraints;
+}
 
-    /* node_unit port B: every unit registers the word it read last cycle (b_pos_q) and
-     * samples node rd_n before this edge's writes. */
+/* node_unit port B: every unit registers the word it read last cycle (b_pos_q) and samples
+   node rd_n before this edge's writes. */
+static void node_unit_read_port(cyc_model *c, uint32_t rd_n)
+{
+    const int m = c->hp.m, k = c->hp.k;
     for (int u = 0; u < m; u++) {
         bool ok = rd_n < (uint32_t)k;
         c->bq_x[u] = c->b_x[u];
@@ -721,7 +725,13 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->b_y[u] = ok ? c->s.pos[u * k + (int)rd_n][1] : 0;
         c->b_z[u] = ok ? c->s.pos[u * k + (int)rd_n][2] : 0;
     }
+}
 
+/* node_unit's storage writes: the init walk's node, a graph's NODE write, a pass's stage D. */
+static void node_unit_writes(cyc_model *c, const cyc_inputs *in, bool *written)
+{
+    const hw_params *hp = &c->hp;
+    const int m = hp->m, k = hp->k;
     /* Storage writes. The init walk (frame_ctrl PH_INIT): node (init_u, init_n) at rest. */
     if (c->phase == PH_INIT) {
         int node = c->init_u * k + c->init_n;
@@ -768,130 +778,145 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
                 for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
             }
     }
-    /* chain_stream: a sweep's writes are planned as it starts and land in their cycles, the
-       previous sweep's (SP cycles along) while this one starts. */
-    if (chain_streams(hp) && c->st_running) {
-        const int lag = c->st_fused ? c->st_lag : 0;
-        if (c->st_t == 1) stream_plan(c); /* a sweep's first cycle (t = 1), its first read */
-        if (c->st_fused) fuse_step_write(c, written, c->st_t - 2 - lag); /* pair j leaves stage W with slot j */
-        stream_write(c, written, c->st_colour, c->st_t - 3 - c->lp - lag);
-        stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 3 - c->lp);
-    }
-    /* The sequencer's write of C (chain_sequencer: wr_en is high in S_NEXT). */
-    if (!hp->arch && !hp->rule && c->sq_state == SQ_NEXT) {
+}
+
+/* chain_stream's writes: a sweep's writes are planned as it starts and land in their cycles, the
+   previous sweep's (SP cycles along) while this one starts. */
+static void chain_stream_writes(cyc_model *c, bool *written)
+{
+    const int lag = c->st_fused ? c->st_lag : 0;
+    if (c->st_t == 1) stream_plan(c); /* a sweep's first cycle (t = 1), its first read */
+    if (c->st_fused) fuse_step_write(c, written, c->st_t - 2 - lag); /* pair j leaves stage W with slot j */
+    stream_write(c, written, c->st_colour, c->st_t - 3 - c->lp - lag);
+    stream_write(c, written, !c->st_colour, c->st_t + c->st_period - 3 - c->lp);
+}
+
+/* chain_sequencer's write of C (wr_en is high in S_NEXT). */
+static void chain_sequencer_write(cyc_model *c, bool *written)
+{
+    const int k = c->hp.k;
+    if (c->sq_state == SQ_NEXT) {
         int node = c->uidx * k + c->nidx;
         if (sim_fx_centred_node(&c->s, node)) lane_write(c, written, c->uidx, c->nidx, node);
     }
-    for (int l = 0; l < hp->wb; l++) c->wb_valid[l] = written[l];
+}
 
-    if (!hp->arch && hp->rule && hp->en_constraints) pair_seq_edge(c, &c->pair, seq_start, false, written);
-    if (hp->en_springs && !chain_streams(hp)) pair_seq_edge(c, &c->force, force_start, true, written);
-    if (graph_streams(hp)) graph_stream_edge(c, seq_start, written);
-    /* spring_stream: the forces of the pass, gathered in link order as it starts; then its control */
-    if (hp->en_springs && chain_streams(hp)) {
-        const int sweep = (int)hw_spring_sweep(hp);
-        const bool slot = c->sp_running && c->sp_t >= 2 && c->sp_t <= k + 2;
-        const bool sweep_end = c->sp_running && c->sp_t == sweep - 1;
-        if (c->sp_running && c->sp_t == 0)
-            for (int i = 0; i + 1 < n; i++) sim_fx_spring_edge(&c->s, c->spring0 + i);
-        c->sp_done = sweep_end;
-        if (force_start && !c->sp_running) {
-            c->sp_running = true;
-            c->sp_t = c->sp_counter = 0;
-        } else if (sweep_end) {
-            c->sp_running = false;
-            c->sp_t = c->sp_counter = 0;
-        } else if (c->sp_running) {
-            c->sp_t++;
-            if (slot) c->sp_counter++;
-        }
+/* spring_stream: the forces of the pass, gathered in link order as it starts; then its control. */
+static void spring_stream_edge(cyc_model *c, const cyc_ctrl *x)
+{
+    const hw_params *hp = &c->hp;
+    const int k = hp->k, n = hp->m * k;
+    const int sweep = (int)hw_spring_sweep(hp);
+    const bool slot = c->sp_running && c->sp_t >= 2 && c->sp_t <= k + 2;
+    const bool sweep_end = c->sp_running && c->sp_t == sweep - 1;
+    if (c->sp_running && c->sp_t == 0)
+        for (int i = 0; i + 1 < n; i++) sim_fx_spring_edge(&c->s, c->spring0 + i);
+    c->sp_done = sweep_end;
+    if (x->force_start && !c->sp_running) {
+        c->sp_running = true;
+        c->sp_t = c->sp_counter = 0;
+    } else if (sweep_end) {
+        c->sp_running = false;
+        c->sp_t = c->sp_counter = 0;
+    } else if (c->sp_running) {
+        c->sp_t++;
+        if (slot) c->sp_counter++;
     }
-    for (int l = 0; l < hp->wb; l++) c->wb_valid[l] = written[l];
+}
 
-    /* chain_stream control: sweeps of SP cycles (the last of the pass SL), colour 0 then 1,
-       ITER times. */
-    if (chain_streams(hp) && hp->en_constraints) {
-        const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
-        /* FUSE: the fused sweep's slots (ts = t - lag), and its end, lag cycles later */
-        const int lag = c->st_fused ? c->st_lag : 0, ts = c->st_t - lag;
-        const int sweep = last ? c->st_last : c->st_period + lag; /* its cycles, t = 1 .. sweep */
-        const bool slot = c->st_running && ts >= 2 && ts <= k / 2 + 2; /* slots 0 .. K/2 */
-        const bool sweep_end = c->st_running && c->st_t == sweep;
-        /* the count restarts at the sweep's first slot: it reaches K/2 + 1 (FEC) even when the
-           last slot issues in the sweep's last cycle, and keeps it until the next sweep's first */
-        const int counter_next = !slot ? c->st_counter : ts == 2 ? 1 : c->st_counter + 1;
-        c->st_done = sweep_end && last;
-        if (seq_start && !c->st_running) {
-            c->st_running = true;
-            c->st_fused = hp->fuse;
-            c->st_colour = c->st_iter = c->st_counter = 0;
-            c->st_t = 1;
-        } else if (sweep_end) {
-            c->st_t = last ? 0 : 1;
-            c->st_fused = false;
-            c->st_counter = counter_next;
-            if (last) c->st_running = false;
-            if (c->st_colour) c->st_iter++;
-            c->st_colour ^= 1;
-        } else if (c->st_running) {
-            c->st_t++;
-            c->st_counter = counter_next;
-        }
+/* chain_stream's control: sweeps of SP cycles (the last of the pass SL), colour 0 then 1, ITER times. */
+static void chain_stream_control(cyc_model *c, const cyc_ctrl *x)
+{
+    const hw_params *hp = &c->hp;
+    const int k = hp->k;
+    const bool last = c->st_colour == 1 && c->st_iter == hp->iter - 1;
+    /* FUSE: the fused sweep's slots (ts = t - lag), and its end, lag cycles later */
+    const int lag = c->st_fused ? c->st_lag : 0, ts = c->st_t - lag;
+    const int sweep = last ? c->st_last : c->st_period + lag; /* its cycles, t = 1 .. sweep */
+    const bool slot = c->st_running && ts >= 2 && ts <= k / 2 + 2; /* slots 0 .. K/2 */
+    const bool sweep_end = c->st_running && c->st_t == sweep;
+    /* the count restarts at the sweep's first slot: it reaches K/2 + 1 (FEC) even when the
+       last slot issues in the sweep's last cycle, and keeps it until the next sweep's first */
+    const int counter_next = !slot ? c->st_counter : ts == 2 ? 1 : c->st_counter + 1;
+    c->st_done = sweep_end && last;
+    if (x->seq_start && !c->st_running) {
+        c->st_running = true;
+        c->st_fused = hp->fuse;
+        c->st_colour = c->st_iter = c->st_counter = 0;
+        c->st_t = 1;
+    } else if (sweep_end) {
+        c->st_t = last ? 0 : 1;
+        c->st_fused = false;
+        c->st_counter = counter_next;
+        if (last) c->st_running = false;
+        if (c->st_colour) c->st_iter++;
+        c->st_colour ^= 1;
+    } else if (c->st_running) {
+        c->st_t++;
+        c->st_counter = counter_next;
     }
+}
 
-    /* chain_sequencer control. */
-    if (!hp->arch && !hp->rule && hp->en_constraints) {
-        const bool last_node = c->counter == n - 1;
-        const bool last_iter = c->sq_iter == hp->iter - 1;
-        int next = c->sq_state;
-        c->sq_done = false;
-        switch (c->sq_state) {
-        case SQ_IDLE:
-            if (seq_start) {
-                c->sq_iter = 0;
-                next = SQ_LOAD_C;
-            }
-            break;
-        case SQ_LOAD_C:
-            c->uidx = c->nidx = c->counter = 0;
-            next = SQ_LOAD_D;
-            break;
-        case SQ_LOAD_D: next = SQ_UP; break;
-        case SQ_UP:
-            c->sq_timer = c->lt; /* toward started now: done is high lt cycles later */
-            next = SQ_UP_W;
-            break;
-        case SQ_UP_W:
-        case SQ_DN_W:
-            if (--c->sq_timer == 0) {
-                c->sq_timer = c->lt; /* the second toward starts in the done cycle */
-                next = c->sq_state == SQ_UP_W ? SQ_DN_W : SQ_NEXT;
-            }
-            break;
-        case SQ_NEXT:
-            c->counter++;
-            if (!last_node) {
-                if (c->nidx == k - 1) {
-                    c->nidx = 0;
-                    c->uidx++;
-                } else {
-                    c->nidx++;
-                }
-                next = SQ_UP;
-            } else if (last_iter) {
-                c->sq_done = true;
-                next = SQ_IDLE;
+/* chain_sequencer's control. */
+static void chain_sequencer_control(cyc_model *c, const cyc_ctrl *x)
+{
+    const hw_params *hp = &c->hp;
+    const int k = hp->k, n = hp->m * k;
+    const bool last_node = c->counter == n - 1;
+    const bool last_iter = c->sq_iter == hp->iter - 1;
+    int next = c->sq_state;
+    c->sq_done = false;
+    switch (c->sq_state) {
+    case SQ_IDLE:
+        if (x->seq_start) {
+            c->sq_iter = 0;
+            next = SQ_LOAD_C;
+        }
+        break;
+    case SQ_LOAD_C:
+        c->uidx = c->nidx = c->counter = 0;
+        next = SQ_LOAD_D;
+        break;
+    case SQ_LOAD_D: next = SQ_UP; break;
+    case SQ_UP:
+        c->sq_timer = c->lt; /* toward started now: done is high lt cycles later */
+        next = SQ_UP_W;
+        break;
+    case SQ_UP_W:
+    case SQ_DN_W:
+        if (--c->sq_timer == 0) {
+            c->sq_timer = c->lt; /* the second toward starts in the done cycle */
+            next = c->sq_state == SQ_UP_W ? SQ_DN_W : SQ_NEXT;
+        }
+        break;
+    case SQ_NEXT:
+        c->counter++;
+        if (!last_node) {
+            if (c->nidx == k - 1) {
+                c->nidx = 0;
+                c->uidx++;
             } else {
-                c->sq_iter++;
-                next = SQ_LOAD_C;
+                c->nidx++;
             }
-            break;
+            next = SQ_UP;
+        } else if (last_iter) {
+            c->sq_done = true;
+            next = SQ_IDLE;
+        } else {
+            c->sq_iter++;
+            next = SQ_LOAD_C;
         }
-        c->sq_state = next;
+        break;
     }
+    c->sq_state = next;
+}
 
-    /* node_unit pass FSM: the data arrive (running, vidx: a node, with PAIR a row); stage A (serial: the same cycle;
-       ARCH = 1: pass_a, idx_a, the cycle after), stage B (pass_b, idx_b), stage C (pass_c, idx_c). */
+/* node_unit's pass FSM: the data arrive (running, vidx: a node, with PAIR a row); stage A (serial:
+   the same cycle; ARCH = 1: pass_a, idx_a, the cycle after), stage B (pass_b, idx_b), stage C
+   (pass_c, idx_c), stage D (pass_d, idx_d: the write, node_unit_writes). */
+static void node_unit_pass(cyc_model *c, const cyc_ctrl *x)
+{
+    const hw_params *hp = &c->hp;
     const bool stage_a = hp->arch ? c->pass_a : c->running, ground_a = hp->arch ? c->ground_a : c->ground_pass;
     const int idx_a = hp->arch ? c->idx_a : c->vidx;
     const bool pass_a_next = c->running, ground_a_next = c->ground_pass;
@@ -902,11 +927,11 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
     const int idx_c_next = c->idx_b;
     const bool pass_d_next = c->pass_c, ground_d_next = c->ground_c;
     const int idx_d_next = c->idx_c;
-    if (verlet_start || ground_start) {
+    if (x->verlet_start || x->ground_start) {
         c->running = true;
         c->done = false;
         c->vidx = 0;
-        c->ground_pass = !verlet_start;
+        c->ground_pass = !x->verlet_start;
     } else {
         const int last_step = (int)hw_pass_steps(hp) - 1; /* node, or with PAIR row, of the pass */
         if (c->running) {
@@ -935,15 +960,21 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         c->idx_d = idx_d_next;
         c->ground_d = ground_d_next;
     }
+}
 
-    /* frame_ctrl's FSM. FUSE: the phase after FORCE (or the frame's start) is CONSTRAIN. */
+/* frame_ctrl's FSM. FUSE: the phase after FORCE (or the frame's start) is CONSTRAIN. Returns
+   whether a frame ended at this edge. */
+static bool frame_ctrl_edge(cyc_model *c, const cyc_inputs *in, const cyc_ctrl *x)
+{
+    const hw_params *hp = &c->hp;
+    const fx_format *f = &c->s.fmt;
+    const int k = hp->k, n = hp->m * k;
     const int body_phase = hp->fuse ? PH_CONSTRAIN : PH_VERLET;
-    const int phase_before = c->phase;
     bool frame_end = false;
     c->frame_done = false;
     switch (c->phase) {
     case PH_IDLE:
-        if (cmd_init) {
+        if (x->cmd_init) {
             c->phase = PH_INIT;
             c->init_u = c->init_n = c->init_count = 0;
             for (int a = 0; a < 3; a++) c->init_pos[a] = a < hp->dim ? c->start[a] : 0;
@@ -970,10 +1001,10 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         if (c->init_count++ == n - 1) c->phase = PH_IDLE;
         break;
     case PH_FORCE:
-        if (force_done) c->phase = body_phase;
+        if (x->force_done) c->phase = body_phase;
         break;
     case PH_GRAB: /* grab_scan: the scan ends by grabbing or releasing (grab_update) */
-        if (scan_end) {
+        if (x->scan_end) {
             for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
             c->s.mouse_down = c->mouse_down_q;
             sim_fx_grab_update(&c->s);
@@ -983,13 +1014,13 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         }
         break;
     case PH_VERLET:
-        if (seq_start) c->phase = PH_CONSTRAIN;
+        if (x->seq_start) c->phase = PH_CONSTRAIN;
         break;
     default: break;
     }
-    if (ground_start) c->phase = PH_GROUND;
-    if (substep_end) {
-        if (last_substep) {
+    if (x->ground_start) c->phase = PH_GROUND;
+    if (x->substep_end) {
+        if (x->last_substep) {
             c->phase = PH_IDLE;
             c->frame_done = true;
             frame_end = true;
@@ -998,9 +1029,16 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
             c->substep++;
         }
     }
+    return frame_end;
+}
 
-    /* Register writes (strand_regfile and the units' pin flags); a frame ending sets irq
-       after IRQ_ACK clears it (frame_ctrl). */
+/* strand_regfile (and the units' pin flags): the register writes; a frame ending sets irq after
+   IRQ_ACK clears it (frame_ctrl). phase_before: frame_ctrl's phase before this edge. */
+static void strand_regfile_edge(cyc_model *c, const cyc_inputs *in, int phase_before, bool frame_end)
+{
+    const hw_params *hp = &c->hp;
+    const fx_format *f = &c->s.fmt;
+    const int m = hp->m, k = hp->k;
     /* node_unit: last cycle's PIN reaches the flags at this edge; this cycle's is on its way */
     if (c->pin_pend >= 0) c->sc.pinned[c->pin_pend] = true;
     c->pin_pend = -1;
@@ -1053,4 +1091,40 @@ void cyc_edge(cyc_model *c, const cyc_inputs *in)
         }
     }
     if (frame_end) c->irq = true;
+}
+
+void cyc_edge(cyc_model *c, const cyc_inputs *in)
+{
+    const hw_params *hp = &c->hp;
+    bool written[CYC_MAX_LANES] = {false};
+    uint32_t rd_u = in->rd_addr >> hp->iw & ((1u << hp->uw) - 1), rd_n = in->rd_addr & ((1u << hp->iw) - 1);
+
+    c->cycle++;
+    c->rd_u_q2 = c->rd_u_q; /* strand_core rd_u_q, rd_u_q2: not reset, follow rd_addr */
+    c->rd_u_q = rd_u;
+    if (in->reset) {
+        reset_all(c);
+        return;
+    }
+    cyc_ctrl x;
+    frame_ctrl_signals(c, in, &x);
+
+    /* the storage: reads before writes, then every block's writes of this edge */
+    node_unit_read_port(c, rd_n);
+    node_unit_writes(c, in, written);
+    if (chain_streams(hp) && c->st_running) chain_stream_writes(c, written);
+    if (!hp->arch && !hp->rule) chain_sequencer_write(c, written);
+    if (!hp->arch && hp->rule && hp->en_constraints) pair_sequencer_edge(c, &c->pair, x.seq_start, false, written);
+    if (hp->en_springs && !chain_streams(hp)) pair_sequencer_edge(c, &c->force, x.force_start, true, written);
+    if (graph_streams(hp)) graph_stream_edge(c, x.seq_start, written);
+    if (hp->en_springs && chain_streams(hp)) spring_stream_edge(c, &x);
+    for (int l = 0; l < hp->wb; l++) c->wb_valid[l] = written[l];
+
+    /* the control */
+    if (chain_streams(hp) && hp->en_constraints) chain_stream_control(c, &x);
+    if (!hp->arch && !hp->rule && hp->en_constraints) chain_sequencer_control(c, &x);
+    node_unit_pass(c, &x);
+    const int phase_before = c->phase;
+    const bool frame_end = frame_ctrl_edge(c, in, &x);
+    strand_regfile_edge(c, in, phase_before, frame_end);
 }
