@@ -40,7 +40,7 @@ import lockstep_fuzz  # noqa: E402  (CLASSES, the classes every chunk covers)
 # what a chunk's verdict is about: the RTL the harness builds (not the board tops) with its
 # parameter table, the model it is compared with, and the harness that compares them. The
 # scripts that draw scenes are not in it: a scene that passed stays passed if they change.
-SOURCES = ["rtl", "model", "scripts/gen_params.py", "tb/harness.cpp", "tb/sim_top.v"]
+SOURCES = ["rtl", "model", "scripts/gen_params.py", "tb/harness.h", "tb/harness_run.cpp", "tb/harness.cpp", "tb/sim_top.v"]
 
 
 def sources_digest():

@@ -26,14 +26,15 @@
 // line: frames, cycles in lockstep, and where the pointer and the node nearest it are.
 // --screenshot FILE.png writes the window's last picture (HUD included) there.
 // Exit status: 0, 1 on a lockstep mismatch (or a screenshot not written), 2 on bad input.
-#define STRAND_DEMO
-#include "harness.cpp"
+#include "harness.h"
 
 #include <SDL.h>
 #include <cairo.h>
 #include <fstream>
 #include <map>
 #include <sstream>
+
+using namespace strand_harness;
 
 namespace {
 

@@ -1,4 +1,4 @@
-"""The Verilator harness: tb/harness.cpp on tb/sim_top.v (strand_core with one build's
+"""The Verilator harness: tb/harness.cpp (with the library tb/harness_run.cpp) on tb/sim_top.v (strand_core with one build's
 parameters, its observation port unpacked), linked with the C model library.
 
     python3 -m strandflow.build SCENE OUTDIR [RTLDIR [ORDER]]   (scripts/build_harness.sh)
@@ -94,9 +94,9 @@ def harness(out, params_vh, params_h, rtl="rtl", opt="", demo=False, jobs=2, tra
               "-CFLAGS", f"{cxxopt}{trace_def} -I{ROOT}/model -I{GEN} -I{out} {pkg_flags('--cflags', 'inih', 'cairo')}"
                          f"{extra_cflags}",
               "-LDFLAGS", f"{LIBSTRAND} {pkg_flags('--libs', 'inih', 'cairo')}{extra_libs} -lm",
-              ] + top_src + srcs + [os.path.join(ROOT, main)])
+              ] + top_src + srcs + [os.path.join(ROOT, "tb", "harness_run.cpp"), os.path.join(ROOT, main)])
     inputs = (([netlist[0]] if netlist is not None else []) + srcs + sorted(glob.glob(os.path.join(rtl, "*.vh"))) + gen_files()
-              + [os.path.join(ROOT, f) for f in ("tb/sim_top.v", "tb/harness.cpp", main)]
+              + [os.path.join(ROOT, f) for f in ("tb/sim_top.v", "tb/harness.h", "tb/harness_run.cpp", "tb/harness.cpp", main)]
               + sorted(glob.glob(os.path.join(ROOT, "model", "*.h"))) + [LIBSTRAND])
     # params.vh's own header line names the scene it came from: not part of the build
     body = lambda text: "".join(ln + "\n" for ln in text.splitlines() if "Generated" not in ln and "written by" not in ln)
