@@ -312,7 +312,7 @@ MUTATE_SEED ?= 1
 MUTATE_BUDGET ?= 300
 # MUTATE_ARGS=--resume: keep the results of a stopped run (same seed) and run the rest
 mutate: bootstrap
-	@$(MAKE) --no-print-directory -s model $(GEN_HDRS) units-vectors
+	@$(MAKE) --no-print-directory -s model $(GEN_HDRS) units-vectors $(UNITS_LAT)
 	@nice -n 10 python3 scripts/mutate.py --mutants $(MUTANTS) --seed $(MUTATE_SEED) --jobs $(JOBS) \
 	  --budget $(MUTATE_BUDGET) --doc docs/verification.md $(MUTATE_ARGS)
 

@@ -301,11 +301,17 @@ def units_configs():
 UNIT_FILES = {"add": ["fx_add.v"], "mul": ["fx_mul.v", "fx_round.v"], "avg": ["fx_avg.v"], "sqrt": ["fx_sqrt.v"],
               "div": ["fx_div.v"], "mul_pipe": ["fx_mul_pipe.v", "fx_round.v"], "sqrt_pipe": ["fx_sqrt_pipe.v"],
               "div_pipe": ["fx_div_pipe.v"]}
-DP_FILES = {"toward": ["toward.v"], "spring_force": ["spring_force.v"],
-            "toward_pipe": ["toward_pipe.v", "fx_sqrt_pipe.v", "fx_div_pipe.v", "fx_mul_pipe.v", "delay_line.v", "strand_ram.v"],
-            "spring_force_pipe": ["spring_force_pipe.v", "fx_sqrt_pipe.v", "fx_div_pipe.v", "fx_mul_pipe.v", "delay_line.v",
-                                  "strand_ram.v"]}
+# each datapath's file, then what it instantiates (tb/units.mk's UNITS_DP_DEPS_<module>: with
+# MANTISSA > 0 the serial datapaths run their pipes, and the pipes fx_along_pipe)
+DP_PIPE_DEPS = ["fx_sqrt_pipe.v", "fx_div_pipe.v", "fx_mul_pipe.v", "delay_line.v", "strand_ram.v", "fx_along_pipe.v",
+                "fx_shr.v"]
+DP_FILES = {"toward": ["toward.v", "toward_pipe.v"] + DP_PIPE_DEPS,
+            "spring_force": ["spring_force.v", "spring_force_pipe.v"] + DP_PIPE_DEPS,
+            "toward_pipe": ["toward_pipe.v"] + DP_PIPE_DEPS,
+            "spring_force_pipe": ["spring_force_pipe.v"] + DP_PIPE_DEPS}
 DP_COMMON = ["fx_add.v", "fx_mul.v", "fx_round.v", "fx_sqrt.v", "fx_div.v"]
+SERIAL_BENCHES = ("tb_fx_sqrt.v", "tb_fx_div.v", "tb_toward.v", "tb_spring_force.v")
+LATENCY_UNITS = ("sqrt", "div", "mul_pipe", "sqrt_pipe", "div_pipe")   # tb/units.mk's UNITS_LATENCY_UNITS
 
 
 def unit_param(unit, w, f, bits, extra):
@@ -337,7 +343,7 @@ def check_units(site, rtl, work, deadline):
                 continue
             tb = f"tb/tb_fx_{unit}.v"
             params = unit_param(unit, w, fr, bits, parts[6] if len(parts) == 7 else "")
-        elif len(parts) in (7, 8) and parts[1] in DP_FILES:
+        elif len(parts) in (7, 8, 9) and parts[1] in DP_FILES:
             datapath = True
             name, mod, w, fr, sb, db, dim = parts[:7]
             files = DP_FILES[mod] + DP_COMMON
@@ -345,8 +351,10 @@ def check_units(site, rtl, work, deadline):
                 continue
             tb = f"tb/tb_{mod}.v"
             params = [f"-Ptb_{mod}.{k}={v}" for k, v in (("W", w), ("F", fr), ("SQRT_BITS", sb), ("DIV_BITS", db), ("DIM", dim))]
-            if len(parts) == 8:
+            if len(parts) >= 8 and parts[7] and mod.endswith("_pipe"):
                 params.append(f"-Ptb_{mod}.STEPS={parts[7]}")
+            if len(parts) == 9 and parts[8]:
+                params.append(f"-Ptb_{mod}.MANTISSA={parts[8]}")
         else:
             raise SystemExit(f"tb/units.mk: configuration '{cfg}' is neither a unit nor a datapath mutate.py knows")
         vec = os.path.join(ROOT, BUILD, "units", name, "vectors.hex")
@@ -355,8 +363,10 @@ def check_units(site, rtl, work, deadline):
         ran += 1
         vvp = os.path.join(work, f"{name}.vvp")
         srcs = [os.path.join(rtl, x) for x in files + (DP_COMMON if datapath else []) if os.path.exists(os.path.join(rtl, x))]
-        rc, out = run(["iverilog", "-g2005", "-I", rtl, "-o", vvp] + params + [tb] + sorted(set(srcs)),
-                      max(1, deadline - time.time()))
+        # the serial units' benches instantiate the latency contract's checker
+        checker = [os.path.join(ROOT, "tb", "serial_latency_check.v")] if tb.endswith(SERIAL_BENCHES) else []
+        rc, out = run(["iverilog", "-g2005", "-I", rtl, "-I", os.path.join(ROOT, "tb"), "-o", vvp] + params + [tb]
+                      + sorted(set(srcs)) + checker, max(1, deadline - time.time()))
         if rc == BUDGET_SPENT:
             return None
         if rc != 0:
@@ -364,6 +374,12 @@ def check_units(site, rtl, work, deadline):
         args = ["vvp", "-n", vvp, f"+vectors={vec}", f"+n={open(vec + '.n').read().strip()}", f"+name={name}"]
         if os.path.exists(vec + ".latency"):
             args.append(f"+latency={open(vec + '.latency').read().strip()}")
+        elif not datapath and unit in LATENCY_UNITS:   # as tb/units.mk's UNITS_LATENCY_ARG
+            steps = parts[6] if len(parts) == 7 and unit in ("sqrt_pipe", "div_pipe") else "1"
+            rc, lat = run([os.path.join(ROOT, BUILD, "units", "unit_latency"), unit, w, bits, bits, "2", steps, "0", "0"], 30)
+            if rc != 0:
+                raise SystemExit(f"mutate: build/units/unit_latency failed ({lat.strip()}); run make test-units first")
+            args.append(f"+latency={lat.strip()}")
         rc, out = run(args, max(1, deadline - time.time()))
         if rc == BUDGET_SPENT:
             return None

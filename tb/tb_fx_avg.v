@@ -20,6 +20,7 @@ module tb_fx_avg;
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
     reg [8*256-1:0] file;
+    reg [8*600-1:0] fail_msg;
     integer         n, i, errors;
     integer         bad_i;
     reg [W-1:0]     bad_got, bad_exp;
@@ -37,17 +38,10 @@ module tb_fx_avg;
         $fatal(1, "timeout");
     end
 
+`include "bench_vectors.vh"
+
     initial begin
-        if (!$value$plusargs("name=%s", name)) name = "tb_fx_avg";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN) begin
-            $display("FAIL %0s: need +vectors=FILE and +n=1..%0d", name, MAXN);
-            $fatal(1, "bad arguments");
-        end
-        $readmemh(file, mem, 0, n - 1);
-        if (^mem[n - 1] === 1'bx) begin
-            $display("FAIL %0s: vector file %0s has fewer than %0d records", name, file, n);
-            $fatal(1, "short vector file");
-        end
+        load_vectors("tb_fx_avg");
         errors = 0;
         bad_i = -1;
         for (i = 0; i < n; i = i + 1) begin
@@ -63,13 +57,10 @@ module tb_fx_avg;
             end
             #1;
         end
-        if (errors != 0) begin
-            $display("FAIL %0s: %0d of %0d vectors wrong; first #%0d a=%h b=%h: y=%h, expected %h",
-                     name, errors, n, bad_i, mem[bad_i][2*FD +: W], mem[bad_i][FD +: W], bad_got, bad_exp);
-            $fatal(1, "mismatch");
-        end
-        $display("PASS %0s (%0d vectors)", name, n);
-        $finish;
+        if (errors != 0)
+            $sformat(fail_msg, "%0d of %0d vectors wrong; first #%0d a=%h b=%h: y=%h, expected %h",
+                     errors, n, bad_i, mem[bad_i][2*FD +: W], mem[bad_i][FD +: W], bad_got, bad_exp);
+        finish_bench(errors, fail_msg, "");
     end
 
 endmodule

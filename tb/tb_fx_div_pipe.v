@@ -27,6 +27,7 @@ module tb_fx_div_pipe;
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
     reg [8*256-1:0] file;
+    reg [8*96-1:0]  note;  // the PASS line's figures
     integer         n, c, v;
 
     reg             clk = 1'b0;
@@ -39,14 +40,11 @@ module tb_fx_div_pipe;
 
     always #5 clk = !clk;
 
+`include "bench_vectors.vh"
+
     initial begin
-        if (!$value$plusargs("name=%s", name)) name = "tb_fx_div_pipe";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
-            !$value$plusargs("latency=%d", LAT) || LAT < 1 || LAT > 64) begin
-            $display("FAIL %0s: needs +vectors=FILE, +n=1..%0d and +latency=1..64", name, MAXN);
-            $fatal(1);
-        end
-        $readmemh(file, mem, 0, n - 1);
+        load_vectors("tb_fx_div_pipe");
+        load_latency(LAT, 1, 64);
         for (c = 0; c < n + LAT; c = c + 1) begin
             @(negedge clk);
             v = c - LAT;
@@ -59,8 +57,8 @@ module tb_fx_div_pipe;
             num = c < n ? mem[c][2*FD +: W] : {W{1'b0}};
             den = c < n ? mem[c][FD +: W] : {W{1'b0}};
         end
-        $display("PASS %0s (%0d vectors, one a clock, latency %0d)", name, n, LAT);
-        $finish;
+        $sformat(note, ", one a clock, latency %0d", LAT);
+        finish_bench(0, "", note);
     end
 endmodule
 

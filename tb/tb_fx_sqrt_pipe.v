@@ -27,6 +27,7 @@ module tb_fx_sqrt_pipe;
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
     reg [8*256-1:0] file;
+    reg [8*96-1:0]  note;  // the PASS line's figures
     integer         n, c, v;
 
     reg             clk = 1'b0;
@@ -38,14 +39,11 @@ module tb_fx_sqrt_pipe;
 
     always #5 clk = !clk;
 
+`include "bench_vectors.vh"
+
     initial begin
-        if (!$value$plusargs("name=%s", name)) name = "tb_fx_sqrt_pipe";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
-            !$value$plusargs("latency=%d", LAT) || LAT < 1 || LAT > 64) begin
-            $display("FAIL %0s: needs +vectors=FILE, +n=1..%0d and +latency=1..64", name, MAXN);
-            $fatal(1);
-        end
-        $readmemh(file, mem, 0, n - 1);
+        load_vectors("tb_fx_sqrt_pipe");
+        load_latency(LAT, 1, 64);
         // cycle c: drive vector c (sampled at the edge ending cycle c), check vector c - LAT
         for (c = 0; c < n + LAT; c = c + 1) begin
             @(negedge clk);
@@ -57,8 +55,8 @@ module tb_fx_sqrt_pipe;
             end
             radicand = c < n ? mem[c][FD +: 2*W] : {2*W{1'b0}};
         end
-        $display("PASS %0s (%0d vectors, one a clock, latency %0d)", name, n, LAT);
-        $finish;
+        $sformat(note, ", one a clock, latency %0d", LAT);
+        finish_bench(0, "", note);
     end
 endmodule
 

@@ -49,6 +49,7 @@ module tb_spring_force;
     reg [RW-1:0]     mem [0:MAXN-1];
     reg [8*64-1:0]   name;
     reg [8*256-1:0]  file;
+    reg [8*600-1:0]  fail_msg;
     reg [8*480-1:0]  first_msg;
     integer          n, i, k, j, errors;
     integer          cycles, limit;
@@ -167,20 +168,13 @@ module tb_spring_force;
         end
     endtask
 
+`include "bench_vectors.vh"
+
     initial begin
         limit = 1000;
-        if (!$value$plusargs("name=%s", name)) name = "tb_spring_force";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
-            !$value$plusargs("latency=%d", LATENCY) || LATENCY < 4 || LATENCY > 256) begin
-            $display("FAIL %0s: need +vectors=FILE, +n=1..%0d and +latency=4..256", name, MAXN);
-            $fatal(1, "bad arguments");
-        end
+        load_vectors("tb_spring_force");
+        load_latency(LATENCY, 4, 256);
         limit = n * (LATENCY + 4) + 1000;
-        $readmemh(file, mem, 0, n - 1);
-        if (^mem[n - 1] === 1'bx) begin
-            $display("FAIL %0s: vector file %0s has fewer than %0d records", name, file, n);
-            $fatal(1, "short vector file");
-        end
         errors = 0;
         i = -1;
         for (j = 0; j < NI; j = j + 1) begin
@@ -246,13 +240,9 @@ module tb_spring_force;
             end
         end
         @(posedge clk); @(negedge clk);  // the last cycle's contract check
-        if (errors != 0 || contract_violations != 0) begin
-            $display("FAIL %0s: %0d value checks and %0d cycles of the latency contract failed; first value check: %0s",
-                     name, errors, contract_violations, errors != 0 ? first_msg : "none");
-            $fatal(1, "mismatch");
-        end
-        $display("PASS %0s (%0d vectors)", name, n);
-        $finish;
+        $sformat(fail_msg, "%0d value checks and %0d cycles of the latency contract failed; first value check: %0s",
+                 errors, contract_violations, errors != 0 ? first_msg : "none");
+        finish_bench(errors + contract_violations, fail_msg, "");
     end
 
 endmodule

@@ -36,6 +36,7 @@ module tb_spring_force_pipe;
     reg [RW-1:0]    mem [0:MAXN-1];
     reg [8*64-1:0]  name;
     reg [8*256-1:0] file;
+    reg [8*96-1:0]  note;  // the PASS line's figures
     integer         n, latency, cyc, next, done_n, resets;
     reg [31:0]      rnd;
     /* verilator lint_off UNUSEDSIGNAL */
@@ -85,14 +86,11 @@ module tb_spring_force_pipe;
     endtask
 
     integer v, k;
+`include "bench_vectors.vh"
+
     initial begin
-        if (!$value$plusargs("name=%s", name)) name = "tb_spring_force_pipe";
-        if (!$value$plusargs("vectors=%s", file) || !$value$plusargs("n=%d", n) || n < 1 || n > MAXN ||
-            !$value$plusargs("latency=%d", latency) || latency < 4 || latency >= HIST) begin
-            $display("FAIL %0s: needs +vectors=FILE, +n=1..%0d and +latency=4..%0d", name, MAXN, HIST - 1);
-            $fatal(1);
-        end
-        $readmemh(file, mem, 0, n - 1);
+        load_vectors("tb_spring_force_pipe");
+        load_latency(latency, 4, HIST - 1);
         for (k = 0; k < HIST; k = k + 1) sent[k] = -1;
         next = 0;
         done_n = 0;
@@ -146,8 +144,8 @@ module tb_spring_force_pipe;
             $display("FAIL %0s: %0d of %0d results came out", name, done_n, n);
             $fatal(1);
         end
-        $display("PASS %0s (%0d vectors, one a clock with gaps, latency %0d, %0d reset in flight)", name, n, latency, resets);
-        $finish;
+        $sformat(note, ", one a clock with gaps, latency %0d, %0d reset in flight", latency, resets);
+        finish_bench(0, "", note);
     end
 endmodule
 

@@ -224,7 +224,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_$(2).v $(UNITS_ROOT)/rtl/fx_$(2).v $(addprefix $(UNITS_ROOT)/,$(UNITS_DEPS_$(2))) $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_$(2),$(4),$(5),$(6),$(7)) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb $(call UNITS_PARAMS_$(2),$(4),$(5),$(6),$(7)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp $(UNITS_LAT)
@@ -252,7 +252,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_fx_mul_pipe.v $(UNITS_ROOT)/rtl/fx_mul_pipe.v $(UNITS_ROOT)/rtl/fx_round.v $(UNITS_ROOT)/tb/ecp5_mult18x18d.v $(UNITS_VH)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul_pipe,$(2),$(3),$(4)) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb $(call UNITS_PARAMS_mul_pipe,$(2),$(3),$(4)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp $(UNITS_LAT)
@@ -302,7 +302,7 @@ $(UNITS_BUILD)/$(1)/vectors.hex: $(UNITS_GEN_DP)
 
 $(UNITS_BUILD)/$(1)/sim.vvp: $(UNITS_ROOT)/tb/tb_$(2).v $(UNITS_RTL_DIR)/$(2).v $(addprefix $(UNITS_RTL_DIR)/,$(addsuffix .v,$(UNITS_DP_UNITS) $(UNITS_DP_DEPS_$(2)))) $(UNITS_VH) $(if $(filter toward spring_force,$(2)),$(UNITS_ROOT)/tb/serial_latency_check.v)
 	@mkdir -p $$(dir $$@)
-	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(and $(8),$(filter %_pipe,$(2))),-Ptb_$(2).STEPS=$(8)) $(if $(9),-Ptb_$(2).MANTISSA=$(9)) -o $$@ $$(filter %.v,$$^)
+	$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb -Ptb_$(2).W=$(3) -Ptb_$(2).F=$(4) -Ptb_$(2).SQRT_BITS=$(5) -Ptb_$(2).DIV_BITS=$(6) -Ptb_$(2).DIM=$(7) $(if $(and $(8),$(filter %_pipe,$(2))),-Ptb_$(2).STEPS=$(8)) $(if $(9),-Ptb_$(2).MANTISSA=$(9)) -o $$@ $$(filter %.v,$$^)
 
 .PHONY: units-run-$(1)
 units-run-$(1): $(UNITS_BUILD)/$(1)/vectors.hex $(UNITS_BUILD)/$(1)/sim.vvp
@@ -391,20 +391,20 @@ lint-units:
 	@set -e; cd $(UNITS_ROOT); \
 	$(foreach u,$(UNITS_NAMES),for p in $(UNITS_LINT_PARAMS_$(u)); do \
 	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl $$p --top-module fx_$(u) rtl/fx_$(u).v $(UNITS_DEPS_$(u)); done; \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb -o /dev/null rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb -o /dev/null tb/tb_fx_$(u).v rtl/fx_$(u).v $(UNITS_DEPS_$(u)) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi;) \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module exh_units tb/exh_units.v $(UNITS_RTL); \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --top-module along_units $(UNITS_ALONG_G) tb/along_units.v $(UNITS_ALONG_RTL); \
 	out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_ROOT)/rtl -o /dev/null tb/along_units.v $(UNITS_ALONG_RTL) 2>&1); \
 	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
 	$(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl -DSTRAND_ECP5_DSP -GW=18 --top-module fx_mul_pipe rtl/fx_mul_pipe.v tb/ecp5_mult18x18d.v; \
-	out=$$($(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_ROOT)/rtl -Ptb_fx_mul_pipe.W=18 -o /dev/null tb/tb_fx_mul_pipe.v rtl/fx_mul_pipe.v rtl/fx_round.v tb/ecp5_mult18x18d.v 2>&1); \
+	out=$$($(UNITS_IVERILOG) -g2005 -Wall -DSTRAND_ECP5_DSP -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb -Ptb_fx_mul_pipe.W=18 -o /dev/null tb/tb_fx_mul_pipe.v rtl/fx_mul_pipe.v rtl/fx_round.v tb/ecp5_mult18x18d.v 2>&1); \
 	if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; \
 	$(foreach m,toward toward_pipe spring_force spring_force_pipe,for p in $(UNITS_LINT_PARAMS_DP); do \
-	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) $(if $(filter toward spring_force,$(m)),tb/serial_latency_check.v); \
-	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) $(if $(filter toward spring_force,$(m)),tb/serial_latency_check.v) 2>&1); \
+	    $(UNITS_VERILATOR) --lint-only -Wall -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb --timing $$p --top-module tb_$(m) tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) $(if $(filter toward spring_force,$(m)),tb/serial_latency_check.v); \
+	    out=$$($(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb $$(echo " $$p" | sed 's/ -G/ -Ptb_$(m)./g') -o /dev/null tb/tb_$(m).v rtl/$(m).v $(UNITS_DP_UNITS:%=rtl/%.v) $(UNITS_DP_DEPS_$(m):%=rtl/%.v) $(if $(filter toward spring_force,$(m)),tb/serial_latency_check.v) 2>&1); \
 	    if [ -n "$$out" ]; then echo "$$out"; exit 1; fi; done;) \
 	echo "lint-units: rtl/fx_{$$(echo $(UNITS_NAMES) | tr ' ' ',')}.v and their testbenches, fx_mul_pipe's ECP5 branch at W = 18 with tb/ecp5_mult18x18d.v, tb/tb_{toward,toward_pipe,spring_force,spring_force_pipe}.v with the datapaths, are clean"
 
@@ -416,7 +416,7 @@ test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex $(UNITS_BUI
 	@mkdir -p $(UNITS_FAULT_DIR)
 	@sed 's/round_up = half & (sticky | q\[0\])/round_up = half/' $(UNITS_ROOT)/rtl/fx_round.v > $(UNITS_FAULT_DIR)/fx_round.v
 	@! cmp -s $(UNITS_ROOT)/rtl/fx_round.v $(UNITS_FAULT_DIR)/fx_round.v || { echo "test-units-fault: could not plant the fault"; exit 1; }
-	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
+	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb $(call UNITS_PARAMS_mul,8,4,7) -o $(UNITS_FAULT_DIR)/sim.vvp \
 	    $(UNITS_ROOT)/tb/tb_fx_mul.v $(UNITS_ROOT)/rtl/fx_mul.v $(UNITS_FAULT_DIR)/fx_round.v
 	@if ( $(call UNITS_JUDGE,$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/sim.vvp +vectors=$< +n=$$(cat $<.n) +name=fx_mul_w8_f4_planted_fault,$(UNITS_FAULT_DIR)/run.log,fx_mul_w8_f4_planted_fault,1) ) \
 	    > $(UNITS_FAULT_DIR)/judge.log 2>&1; \
@@ -426,7 +426,7 @@ test-units-fault: $(UNITS_BUILD)/fx_mul_w8_f4_exhaustive/vectors.hex $(UNITS_BUI
 	@# cycle, the values all right, must fail the bench through the checker alone
 	@sed 's/assign busy        = busy_q;/assign busy        = busy_q || done_q;/' $(UNITS_ROOT)/rtl/fx_div.v > $(UNITS_FAULT_DIR)/fx_div.v
 	@! cmp -s $(UNITS_ROOT)/rtl/fx_div.v $(UNITS_FAULT_DIR)/fx_div.v || { echo "test-units-fault: could not plant the busy fault"; exit 1; }
-	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl $(call UNITS_PARAMS_div,8,4,7) -o $(UNITS_FAULT_DIR)/div.vvp \
+	@$(UNITS_IVERILOG) -g2005 -Wall -I$(UNITS_RTL_DIR) -I$(UNITS_ROOT)/rtl -I$(UNITS_ROOT)/tb $(call UNITS_PARAMS_div,8,4,7) -o $(UNITS_FAULT_DIR)/div.vvp \
 	    $(UNITS_ROOT)/tb/tb_fx_div.v $(UNITS_FAULT_DIR)/fx_div.v $(UNITS_ROOT)/tb/serial_latency_check.v
 	@$(UNITS_VVP) -n $(UNITS_FAULT_DIR)/div.vvp +vectors=$(word 2,$^) +n=$$(cat $(word 2,$^).n) \
 	    +latency=$$($(UNITS_LAT) div 8 7 7 2 1 0 0) +name=fx_div_w8_planted_busy > $(UNITS_FAULT_DIR)/div.log 2>&1; \
