@@ -48,55 +48,20 @@ SCENE     ?= sim/scenes/ref000_rope.scene
 override SCENE := $(if $(or $(findstring /,$(SCENE)),$(filter %.scene,$(SCENE))),$(SCENE),sim/scenes/$(SCENE).scene)
 RUN_DIR    = $(BUILD)/run/$(basename $(notdir $(SCENE)))
 
-.PHONY: test-units-jobs help bootstrap model cpu-rope cpu-fast run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
+.PHONY: test-units-jobs help help-all bootstrap model cpu-rope cpu-fast run sim wave docs-sim docs-tables test-docs bench bench-report movie lockstep-hard test test-model test-scenes test-rtl-frames test-lockstep test-waves test-demo demo test-fusesoc fusesoc bitstream test-board test-axil lockstep-fuzz formal test-formal \
         lockstep-soak mutate gatesim test-gatesim \
         lint lint-c lint-rtl clean
 .DEFAULT_GOAL := help
 
+# make help and make help-all print scripts/make_targets.tsv (README.md's and docs/architecture.md's
+# tables are made from it too: make docs-tables)
+HELP_AWK = '!/^\#/ && ($$3 == "user" || all) { printf "  make %s%s%s\n      %s\n", $$1, ($$2 == "" ? "" : " "), $$2, $$4 }'
 help:
-	@echo "Strand make targets:"
-	@echo "  make test        install what is missing, then run every test (ends with 'N passed, N failed')"
-	@echo "  make sim [SCENE=...] [WAVES=1] [ORDER=redblack] [FRAMES=N]  the RTL in lockstep with the C model: summary, CSV, picture (build/sim/);"
-	@echo "                   progress every 5 s; ORDER=redblack: a chain's pipelined passes; FRAMES: that many frames, not the scene's"
-	@echo "  make wave [SCENE=...] [FRAMES=N]  run make sim with WAVES=1 and open GTKWave on the trace"
-	@echo "  make run [SCENE=...]  run a scene on the C model: summary, CSV and pictures in $(BUILD)/run/"
-	@echo "  make lockstep-fuzz [N=200] [SEED=1] [BUILDS=6]  random scenes in lockstep over every build class (N >= 3 x (3 + BUILDS)"
-	@echo "                   covers them all, whatever the seed; the run prints them); a failure prints its seed"
-	@echo "  make lockstep-hard  every hard case the RTL supports, in lockstep (sim/scenes/hard_*.scene)"
-	@echo "  make lockstep-soak [SOAK_SCENES=10000] [SOAK_CHUNK=2000] [SOAK_BUILDS=12]  random scenes in lockstep at scale, in chunks"
-	@echo "                   (each its own seed and builds, every class); resumable; totals -> docs/verification.md"
-	@echo "  make mutate [MUTANTS=120] [MUTATE_SEED=1] [MUTATE_BUDGET=300]  mutants of rtl/ through the fast checks:"
-	@echo "                   the score, by check, and the survivors -> docs/verification.md (30-60 min on 2 cores)"
-	@echo "  make model       build the C model library and the CLI, $(STRAND)"
-	@echo "  make docs-sim    regenerate the picture and summary README.md shows"
-	@echo "  make docs-tables regenerate the tables of docs/architecture.md (registers, parameters, cycle formula)"
-	@echo "  make test-axil   the AXI4-Lite shell under cocotb, against the C model"
-	@echo "  make bench       the core's physics throughput (both architectures) against one CPU core, and the"
-	@echo "                   harness's simulated cycles per second -> docs/performance.md (fmax from make synth)"
-	@echo "  make cpu-rope    build $(BUILD)/cpu_rope: a chain scene's frames in plain C, float or double, timed"
-	@echo "  make cpu-fast    build $(BUILD)/cpu_fast: the same, vectorised for this machine (red/black chains)"
-	@echo "  make bitstream [BOARD=icebreaker|ulx3s] [BOARD_SCENE=...]  a bitstream (rtl/boards/); then strand board --port DEV SCENE"
-	@echo "  make fusesoc     strand.core through FuseSoC/edalize: lint (Verilator), sim (Icarus frame bench), synth (Yosys, ECP5)"
-	@echo "  make demo [SCENE=...] [FMAX=MHz]  the RTL live in an SDL2 window, your mouse on its inputs, in lockstep with the C model"
-	@echo "  make movie [SCENE=...] [FRAMES=N]  an MP4 and a GIF of the scene's frames (build/movie/)"
-	@echo "  make lint        C with -Wall -Wextra -Werror and -std=c11 -pedantic; Verilog lint"
-	@echo "  make test-stability  the hard cases in fixed and double (10^5 frames of most) and strand check's stability bound"
-	@echo "  make test-fuzz   replay the fuzz corpus and crash reproducers, a 45 s fuzz run, malformed scenes on the CLI"
-	@echo "  make fuzz [FUZZ_SECONDS=600]  a longer bounded run of the scene-parser fuzzer (libFuzzer, ASan, UBSan)"
-	@echo "  make soak [SOAK_JOBS=2]  10^6 frames of every hard case on the model; docs/soak.md"
-	@echo "  make stability   regenerate docs/stability.md and docs/img/stability_euler_verlet.png"
-	@echo "  make synth       Yosys (generic, iCE40 + nextpnr, ECP5, Xilinx) for the 4x5, 8x8, 16x16 builds, their"
-	@echo "                   pipelined versions (cells; the 4x5 also on the ECP5) -> docs/resources.md (hours)"
-	@echo "  make effects     each effect's cost in cells (Yosys) and cycles per frame (RTL, measured) -> docs/effects.md"
-	@echo "  make accuracy    the accuracy study: sweep, Yosys cells, RTL cycle samples; rewrites docs/accuracy.md (cached; ~16 min from nothing)"
-	@echo "  make test-accuracy  quick slice: the checkers, the cycle formula, and the claims docs/accuracy.md makes"
-	@echo "  make gatesim [GATESIM_YOSYS=venv]  the ECP5 netlist of one build of each kind in lockstep with the C model,"
-	@echo "                   a planted fault each -> docs/verification.md (about an hour on 2 cores)"
-	@echo "  make formal [ONLY=PATTERN] [FAULTS=PATTERN]  every SymbiYosys proof of tb/formal/*.sby and the planted faults -> docs/verification.md"
-	@echo "                   (ONLY: just the matching tasks, FAULTS: and the matching planted faults, their rows replaced)"
-	@echo "  make test-formal the quick slice of make formal (part of make test)"
-	@echo "  make bootstrap   install the Debian packages and the Python environment"
-	@echo "  make clean       remove $(BUILD)/"
+	@echo "Strand make targets (make help-all: the developer targets too):"
+	@awk -F'\t' -v all=0 $(HELP_AWK) scripts/make_targets.tsv
+help-all:
+	@echo "Strand make targets, the developer targets last:"
+	@awk -F'\t' -v all=1 $(HELP_AWK) scripts/make_targets.tsv
 
 bootstrap:
 	@scripts/bootstrap.sh
@@ -451,9 +416,9 @@ test-axil: $(STRAND) $(GEN_HDRS)
 
 # The tables docs/architecture.md quotes (registers, parameters, the cycle formula) from their one sources.
 docs-tables: $(STRAND)
-	@python3 scripts/doc_tables.py docs/architecture.md
+	@python3 scripts/doc_tables.py docs/architecture.md README.md
 test-docs: $(STRAND)
-	@python3 scripts/doc_tables.py --check docs/architecture.md
+	@python3 scripts/doc_tables.py --check docs/architecture.md README.md
 	@python3 tb/doc_claims.py $(STRAND)
 
 # ---- formal properties (SymbiYosys, tb/formal/*.sby; scripts/formal.py) ----

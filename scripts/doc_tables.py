@@ -13,10 +13,16 @@ with the table NAME, made from the one source of its facts:
     timing      the cycle counts of the default scene's build: `strand info` (model/timing.c)
     timing_pipelined  the same with --order redblack: the pipelined build (ARCH = 1)
     timing_graph      the tensegrity of reference 001 with --order redblack: a graph's pipelined pass
+    make_targets      the make targets a user sees (README.md): scripts/make_targets.tsv's user rows
+    make_targets_dev  the developer targets (docs/architecture.md): its dev rows
+
+and checks that every numeric [VAR=N] a target's arguments show is VAR's default (VAR ?= N) in
+the Makefile or the files it includes (a FAIL line names each that is not).
 
 With --check nothing is written: the exit status is 1 and a FAIL line names each file
 whose regions are not what they would be (make test runs this).
 """
+import glob
 import os
 import re
 import subprocess
@@ -67,7 +73,46 @@ def timing(order=None, scene=DEFAULT_SCENE):
             "```"] + text.rstrip("\n").splitlines() + ["```"]
 
 
-MAKERS = {"registers": registers, "parameters": parameters, "timing": timing,
+TARGETS = os.path.join(ROOT, "scripts", "make_targets.tsv")
+
+
+def target_rows():
+    """(target, arguments, audience, help line, README text) of scripts/make_targets.tsv."""
+    rows = []
+    for n, line in enumerate(open(TARGETS, encoding="utf-8"), 1):
+        if line.startswith("#") or not line.strip():
+            continue
+        f = line.rstrip("\n").split("\t")
+        if len(f) != 5 or f[2] not in ("user", "dev"):
+            raise SystemExit(f"{TARGETS}:{n}: want target, arguments, user or dev, help line, README text (tab-separated)")
+        rows.append(f)
+    return rows
+
+
+def make_targets(audience):
+    lines = ["| target | what it does |", "|---|---|"]
+    for name, args, aud, _, text in target_rows():
+        if aud == audience:
+            lines.append(f"| `make {name}{' ' + args if args else ''}` | {text} |")
+    return lines
+
+
+def stale_target_defaults():
+    """The [VAR=N] of the targets' arguments that are not the Makefile's VAR ?= N."""
+    defaults = {}
+    for mk in ["Makefile"] + sorted(glob.glob(os.path.join(ROOT, "tb", "*.mk")) + glob.glob(os.path.join(ROOT, "scripts", "*.mk"))):
+        for m in re.finditer(r"^(\w+) \?= (\S+)\s*$", open(os.path.join(ROOT, mk)).read(), re.M):
+            defaults.setdefault(m.group(1), m.group(2))
+    bad = []
+    for name, args, *_ in target_rows():
+        for var, val in re.findall(r"\[(\w+)=(\d+)\]", args):
+            if var in defaults and re.fullmatch(r"\d+", defaults[var]) and defaults[var] != val:
+                bad.append(f"make {name}: [{var}={val}], but the Makefile's default is {var} ?= {defaults[var]}")
+    return bad
+
+
+MAKERS = {"make_targets": lambda: make_targets("user"), "make_targets_dev": lambda: make_targets("dev"),
+          "registers": registers, "parameters": parameters, "timing": timing,
           "timing_pipelined": lambda: timing("redblack"),
           "timing_graph": lambda: timing("redblack", "sim/scenes/ref001_video3.scene")}
 REGION = re.compile(r"(<!-- BEGIN generated: (\w+) -->\n)(.*?)(<!-- END generated: \2 -->)", re.S)
@@ -98,6 +143,9 @@ def main():
                 f.write(new)
             os.replace(path + ".tmp", path)
             print(f"doc_tables: rewrote the generated regions of {path}")
+    for why in stale_target_defaults():
+        print(f"FAIL doc-tables: scripts/make_targets.tsv: {why}")
+        stale += 1
     if check and not stale:
         print(f"PASS doc-tables: the generated regions of {', '.join(files)} match their sources")
     return 1 if stale else 0
