@@ -54,11 +54,8 @@
  *   5, 6 the squares (fx_mul_pipe)   7 x     8 c: x' before rounding, the ROM index
  *   9 the ROM word (Y0, C0), x' rounded      10, 11 x' C0
  *   12 Newton's difference           13 Y1   14, 15 Q = R Y1
- *   16 Qm rounded, the shift         17, 18 d_k Qm's parts (multiplier blocks)
- *   19 their sum                     20 the shift back   21 t rounded, saturated, and ok
- * Each multiplier's operands and product sit in registers of their own (inside the block on
- * the ECP5): at W = 32, d_k Qm is two blocks, d_k's signed high and unsigned low 17 bits, and
- * the adder that joins them has stage 19 to itself, not the cycle after the blocks.
+ *   16 Qm before rounding, the shift 17 Qm   18, 19 d_k Qm
+ *   20 the shift back                21 t rounded, saturated, and ok
  * LATENCY = 21 (model/timing.c hw_along_pipe_latency, pipe_latency.vh): an operation on
  * the inputs in cycle 0 has t and ok in cycle 21. Throughput one operation a clock. d and R
  * wait for the ratio in delay_line rings. No reset: the caller's valid bits say
@@ -92,10 +89,6 @@ module fx_along_pipe #(
     localparam integer FB  = $clog2(FW);               // a bit index into a funnel
     localparam integer XW  = 2 * MB + 2;               // x = sum m_k^2 < 2^(2MB+2)
     localparam integer PW2 = W + MB;                   // d_k Qm, signed: |d_k| <= 2^(W-1), Qm < 2^MB
-    localparam integer LO  = 17;                       // d_k's unsigned low part when it splits
-    localparam integer MUL_W = 18;                     // fx_mul_pipe's one-block operand width
-    localparam integer WP  = W <= MUL_W ? (W > MB + 1 ? W : MB + 1) : (MB + 1 > MUL_W ? MB + 1 : MUL_W);
-                                                       // d_k Qm's operand width: one block at MB <= 17
     localparam integer PRE = W > MB ? W - MB : 0;      // -min(0, sh + s): sh + s >= MB - W
     localparam integer EW  = PW2 + PRE + 1;            // d_k Qm 2^(PRE+1): the shift back's word
     localparam integer UB  = $clog2(EW);               // its shift, 1 .. EW - 1
@@ -299,71 +292,39 @@ module fx_along_pipe #(
     wire [PW-1:0] q_15;
     fx_mul_pipe #(.W(WM)) u_ratio (.clk(clk), .a({{(WM-MB){1'b0}}, rl_13[MB-1:0]}), .b({{(WM-MB){1'b0}}, y1_13}), .prod(q_15));
 
-    // ---- 16: b = Q's bit 2MB - 1; Qm = Q >> (MB - 1 + b), rounded and clamped in one stage (a
-    // multiplexer, the sticky OR and an MB-bit increment whose carry is the clamp); the shift back
-    // u = sh + PRE + 1 = 2MB + J - (MB - 1) - b - Lr + PRE, from 1 to EW - 1 ----
+    // ---- 16: b = Q's bit 2MB - 1; Qm = Q >> (MB - 1 + b) before rounding; the shift back
+    // u = sh + PRE + 1 = 2MB + J - (MB - 1) - b - Lr + PRE, from 1 to EW - 1; 17: Qm ----
     wire          qb     = q_15[2*MB-1];
     wire [MB-1:0] qkept  = qb ? q_15[MB +: MB] : q_15[MB-1 +: MB];
     wire          qhalf  = qb ? q_15[MB-1] : q_15[MB-2];
     wire          qbelow = q_15[MB-3:0] != {(MB-2){1'b0}} || (qb && q_15[MB-2]);
-    wire [MB:0]   qinc   = {1'b0, qkept} + {{MB{1'b0}}, qhalf && (qbelow || qkept[0])};
-    reg  [MB-1:0] qm_16;
+    reg  [MB-1:0] qt_16;
+    reg           qhalf_16, qsticky_16;
     reg  [UB-1:0] u_16, u_17, u_18, u_19;
     always @(posedge clk) begin
-        qm_16 <= qinc[MB] ? TOP : qinc[MB-1:0];
-        u_16  <= U0 + {{(UB-1){1'b0}}, jh_15} - {{(UB-1){1'b0}}, qb} - {{(UB-LB){1'b0}}, lr_15}
-                 + {{(UB-LB){1'b0}}, l_15};
+        qt_16      <= qkept;
+        qhalf_16   <= qhalf;
+        qsticky_16 <= qbelow;
+        u_16       <= U0 + {{(UB-1){1'b0}}, jh_15} - {{(UB-1){1'b0}}, qb} - {{(UB-LB){1'b0}}, lr_15}
+                      + {{(UB-LB){1'b0}}, l_15};
+    end
+    reg [MB-1:0] qm_17;
+    always @(posedge clk) begin
+        qm_17 <= qt_16 + {{(MB-1){1'b0}}, qhalf_16 && (qsticky_16 || qt_16[0]) && qt_16 != TOP};
         u_17  <= u_16;
         u_18  <= u_17;
         u_19  <= u_18;
     end
 
-    // ---- d and the zero flag wait (cycles 2 .. 16, the flag to 20); 17, 18: d_k Qm's parts in
-    // multiplier blocks (fx_mul_pipe: operands, then product, both registered); 19: their sum. The
-    // product takes d itself, not its rounded mantissa m_k, so that t keeps d's direction exactly:
-    // only its length, rest / |d|, is computed on mantissas (a rounded m_k would put every target
-    // on a grid of rest 2^-MB across the link, coarser than a slow swing's step) ----
-    wire [DIM*W:0] dz_16;
-    delay_line #(.WIDTH(DIM * W + 1), .DELAY(14), .BLOCK_MIN(BLOCK_MIN)) u_d_ring (
-        .clk(clk), .reset(reset), .in({zero_2, d_2}), .out(dz_16));
-    reg [3:0] zero_q;                   // the flag in cycles 17 .. 20
-    always @(posedge clk) zero_q <= {zero_q[2:0], dz_16[DIM*W]};
-    wire [DIM*PW2-1:0] prod_19;
-    generate
-        for (k = 0; k < DIM; k = k + 1) begin : g_product
-            wire [W-1:0] dk = dz_16[k*W +: W];
-            if (W <= MUL_W) begin : g_one
-                // d_k and Qm both fit one block's operand: one product, its sum stage a register
-                /* verilator lint_off UNUSEDSIGNAL */
-                // |d_k Qm| < 2^(W-1+MB): the product's bits above PW2 are sign copies
-                wire [2*WP-1:0] p_18;
-                /* verilator lint_on UNUSEDSIGNAL */
-                fx_mul_pipe #(.W(WP)) u_prod (.clk(clk), .a({{(WP-W+1){dk[W-1]}}, dk[W-2:0]}),
-                                              .b({{(WP-MB){1'b0}}, qm_16}), .prod(p_18));
-                reg [PW2-1:0] p_19;
-                always @(posedge clk) p_19 <= p_18[PW2-1:0];
-                assign prod_19[k*PW2 +: PW2] = p_19;
-            end else begin : g_split
-                // d_k = dh 2^LO + dl (dl the unsigned low LO bits): two products of one block each
-                // at MB <= 17, so the multipliers' own registers hold the operands and the parts,
-                // and the adder that joins them has a cycle of its own
-                wire [LO-1:0]   dl = dk[LO-1:0];
-                wire [W-LO-1:0] dh = dk[W-1:LO];
-                /* verilator lint_off UNUSEDSIGNAL */
-                // |dl Qm| < 2^(LO+MB) and |dh Qm| < 2^(W-LO-1+MB): the parts' top bits are sign copies
-                wire [2*WP-1:0] pl_18, ph_18;
-                /* verilator lint_on UNUSEDSIGNAL */
-                fx_mul_pipe #(.W(WP)) u_low (.clk(clk), .a({{(WP-LO){1'b0}}, dl}),
-                                             .b({{(WP-MB){1'b0}}, qm_16}), .prod(pl_18));
-                fx_mul_pipe #(.W(WP)) u_high (.clk(clk), .a({{(WP-W+LO){dh[W-LO-1]}}, dh}),
-                                              .b({{(WP-MB){1'b0}}, qm_16}), .prod(ph_18));
-                reg [PW2-1:0] p_19;
-                always @(posedge clk)
-                    p_19 <= {ph_18[PW2-LO-1:0], {LO{1'b0}}} + {{(PW2-LO-MB){1'b0}}, pl_18[LO+MB-1:0]};
-                assign prod_19[k*PW2 +: PW2] = p_19;
-            end
-        end
-    endgenerate
+    // ---- d and the zero flag wait (cycles 2 .. 17, the flag to 21); 18, 19: d_k Qm. The product
+    // takes d itself, not its rounded mantissa m_k, so that t keeps d's direction exactly: only
+    // its length, rest / |d|, is computed on mantissas (a rounded m_k would put every target on a
+    // grid of rest 2^-MB across the link, coarser than a slow swing's step) ----
+    wire [DIM*W:0] dz_17;
+    delay_line #(.WIDTH(DIM * W + 1), .DELAY(15), .BLOCK_MIN(BLOCK_MIN)) u_d_ring (
+        .clk(clk), .reset(reset), .in({zero_2, d_2}), .out(dz_17));
+    reg [2:0] zero_q;                   // the flag in cycles 18 .. 20
+    always @(posedge clk) zero_q <= {zero_q[1:0], dz_17[DIM*W]};
 
     // ---- 20: E = d_k Qm 2^(PRE+1) >> u, its half and sticky bits; 21: rounded, saturated.
     // |t| < 2^(2MB-sh) <= 2^(Lr+2) <= 2^(W+1) (|d_k| 2^-s < 2^MB), so the shift keeps KW = W + 3 bits
@@ -371,7 +332,17 @@ module fx_along_pipe #(
     wire [EW-1:0] below_mask = ~({EW{1'b1}} << (u_19 - 1'b1));   // the bits under the half bit
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_back
-            wire [EW-1:0] e = {prod_19[k*PW2 +: PW2], {(PRE+1){1'b0}}};
+            // the product in two stages: operands registered, then the product (W x (MB + 1) bits
+            // signed: one multiplier block up to W = 17, two at W = 32)
+            reg  signed [W-1:0]   da_18;
+            reg         [MB-1:0]  qa_18;
+            reg  signed [PW2-1:0] prod_19;
+            always @(posedge clk) begin
+                da_18   <= dz_17[k*W +: W];
+                qa_18   <= qm_17;
+                prod_19 <= da_18 * $signed({1'b0, qa_18});
+            end
+            wire [EW-1:0] e = {prod_19, {(PRE+1){1'b0}}};
             wire [KW-1:0] kept;
             fx_shr #(.IN_W(EW), .OUT_W(KW), .SB(UB), .SIGNED(1'b1)) u_back (.a(e), .s(u_19), .y(kept));
             reg  [KW-1:0] kept_20;
@@ -394,7 +365,7 @@ module fx_along_pipe #(
                 t[k*W +: W] <= over ? {neg, {(W-1){!neg}}} : rounded;
         end
     endgenerate
-    always @(posedge clk) ok <= !zero_q[3];
+    always @(posedge clk) ok <= !zero_q[2];
 
 endmodule
 
