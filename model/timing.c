@@ -5,8 +5,7 @@
 
 /* fx_along_pipe.v (the normalised datapath, MANTISSA > 0): |d| OR-ed, the leading ones, the funnels,
    their rounding, the squares (two stages), x, x's normalising, the ROM word, x' C0 (two stages),
-   Newton's difference, Y1, R Y1 (two stages), Qm shifted and rounded, d Qm's parts in multiplier blocks (two
-   stages), their sum, the shift back, t */
+   Newton's difference, Y1, R Y1 (two stages), Qm's shift, Qm, d Qm (two stages), the shift back, t */
 long hw_along_pipe_latency(const hw_params *hp)
 {
     (void)hp;
