@@ -16,7 +16,7 @@ COPT     := -O2 -g
 DEP_CFLAGS = $(shell pkg-config --cflags inih cairo 2>/dev/null)
 DEP_LIBS   = $(shell pkg-config --libs inih cairo 2>/dev/null)
 GEN       := $(BUILD)/gen
-GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh $(GEN)/strand_params.h $(GEN)/strand_params.vh
+GEN_HDRS  := $(GEN)/strand_regs.h $(GEN)/strand_regs.vh $(GEN)/strand_params.h $(GEN)/strand_params.vh $(GEN)/strand_effects.h
 MODEL_CFLAGS = $(CSTD) $(WARN) $(COPT) -Imodel -I$(GEN) $(DEP_CFLAGS)
 
 MODEL_SRC := model/fixed.c model/scene.c model/scene_edit.c model/engine.c model/engine_fixed.c model/engine_double.c model/render.c \
@@ -68,13 +68,18 @@ bootstrap:
 
 # ---- generated headers: the register map, one source for C and Verilog ----
 
-$(GEN)/strand_regs.h $(GEN)/strand_regs.vh &: scripts/gen_regs.py
+$(GEN)/strand_regs.h $(GEN)/strand_regs.vh &: scripts/gen_regs.py scripts/gen_effects.py
 	python3 scripts/gen_regs.py $(GEN)
 
 # ---- generated headers: the build parameters of strand_core, one table for every side ----
 
-$(GEN)/strand_params.h $(GEN)/strand_params.vh &: scripts/gen_params.py
+$(GEN)/strand_params.h $(GEN)/strand_params.vh &: scripts/gen_params.py scripts/gen_effects.py
 	python3 scripts/gen_params.py $(GEN)
+
+# ---- generated: the effects table's C side and the scene fuzzer's dictionary ----
+
+$(GEN)/strand_effects.h $(GEN)/scene.dict &: scripts/gen_effects.py tb/fuzz/scene.dict
+	python3 scripts/gen_effects.py $(GEN)
 
 # ---- the C model ----
 
@@ -292,8 +297,8 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 
 test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
-	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit (chains and a graph)
-	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene; do \
+	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit (chains and a graph, and wind)
+	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene tb/scenes/wind_rope.scene; do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
 	@# so does the optimised one, in the red/black order: each chain with the centred and the pairwise rule
 	@# (written under $(BUILD)/cpu_fast_scenes/), 2D and 3D, pins at the ends or not, zero lengths, every frame of the scene
@@ -336,7 +341,7 @@ test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	  else echo "FAIL cpu_fast $$a: exit status $$rc, not 2 with a message on --stretch: $$msg"; exit 1; fi; done
 	@# and it refuses what it does not run, naming the scene's line: exit status 2
 	@for s in tb/bench/bench_4x5.scene tb/bench/graph_cloth.scene tb/bench/springs_4x5.scene sim/scenes/hard_ground_impact.scene \
-	          sim/scenes/hard_mouse_grab.scene tb/scenes/previous/rope_centred.scene sim/scenes/ref002_euler.scene; do \
+	          sim/scenes/hard_mouse_grab.scene tb/scenes/previous/rope_centred.scene sim/scenes/ref002_euler.scene tb/scenes/wind_rope.scene; do \
 	  msg=$$($(CPU_FAST) $$s --check 2>&1); rc=$$?; \
 	  if [ $$rc -eq 2 ] && echo "$$msg" | grep -q "^$$s:[0-9]*: cpu_fast runs chains"; then echo "PASS cpu_fast refuses $$s: $${msg##*; not }"; \
 	  else echo "FAIL cpu_fast $$s: exit status $$rc, not 2 with a message naming the scene's line: $$msg"; exit 1; fi; done
@@ -416,9 +421,9 @@ test-axil: $(STRAND) $(GEN_HDRS)
 
 # The tables docs/architecture.md quotes (registers, parameters, the cycle formula) from their one sources.
 docs-tables: $(STRAND)
-	@python3 scripts/doc_tables.py docs/architecture.md README.md
+	@python3 scripts/doc_tables.py docs/architecture.md README.md sim/scenes/README.md
 test-docs: $(STRAND)
-	@python3 scripts/doc_tables.py --check docs/architecture.md README.md
+	@python3 scripts/doc_tables.py --check docs/architecture.md README.md sim/scenes/README.md
 	@python3 tb/doc_claims.py $(STRAND)
 
 # ---- formal properties (SymbiYosys, tb/formal/*.sby; scripts/formal.py) ----

@@ -151,6 +151,7 @@ static const char *unsupported(const scene *sc, int *line)
         {sc->en_ground, "ground", NULL, "the ground"},
         {sc->en_mouse && sc->mouse == MOUSE_GRAB, "mouse", "mode", "the grab form of the mouse"},
         {sc->projection == PROJECTION_PREVIOUS, "constraints", "projection", "projection = previous"},
+        STRAND_EFFECT_CPU_FAST_REFUSALS(sc) /* the effects table's it does not run */
         {sc->order != ORDER_REDBLACK, "constraints", "order",
          "the serial order (give --order redblack; cpu_rope runs both orders)"},
     };

@@ -47,7 +47,7 @@ typedef struct {
     typedef struct {                                                                                                \
         T (*pos)[3], (*prev)[3];                                                                                    \
         T *rest; /* per link */                                                                                     \
-        T gravity[3], box[3], mouse[3], damping, impulse, dist;                                                     \
+        T gravity[3], box[3], mouse[3], damping, impulse, dist, wind[3], drag;                                      \
         bool mouse_down;                                                                                            \
     } NAME##_state;                                                                                                 \
                                                                                                                     \
@@ -61,7 +61,9 @@ typedef struct {
         for (int k = 0; k < 3; k++) {                                                                               \
             r->gravity[k] = (T)sh->ref->gravity[k];                                                                 \
             r->box[k] = (T)sh->ref->box[k];                                                                         \
+            r->wind[k] = (T)sh->ref->wind[k];                                                                       \
         }                                                                                                           \
+        r->drag = (T)sh->ref->drag;                                                                                 \
         r->damping = (T)sh->ref->damping;                                                                           \
         r->impulse = (T)sh->ref->impulse;                                                                           \
         r->dist = (T)sh->ref->dist;                                                                                 \
@@ -133,6 +135,7 @@ typedef struct {
                 for (int k = 0; k < dim; k++) {                                                                     \
                     T v = r->pos[i][k] - r->prev[i][k];                                                             \
                     if (sc->damping > 0) v = v - v * r->damping;                                                    \
+                    if (sc->en_wind) v = v - (v - r->wind[k]) * r->drag;                                            \
                     r->prev[i][k] = r->pos[i][k];                                                                   \
                     T x = r->pos[i][k] + v;                                                                         \
                     if (sc->en_gravity) x = x + r->gravity[k];                                                      \
@@ -218,9 +221,9 @@ int main(int argc, char **argv)
     const char *why = sc.integrator != INTEGRATOR_VERLET ? "explicit Euler"
                       : sc.en_springs ? "springs" : sc.en_ground ? "the ground" : sc.en_mouse && sc.mouse == MOUSE_GRAB ? "the grab form of the mouse"
                       : sc.projection == PROJECTION_PREVIOUS ? "projection = previous"
-                      : NULL;
+                      : STRAND_EFFECT_CPU_REFUSES(&sc);
     if (why) {
-        fprintf(stderr, "%s:1: cpu_rope runs chains and graphs with gravity, damping, the mouse impulse and constraints; not %s\n", path, why);
+        fprintf(stderr, "%s:1: cpu_rope runs chains and graphs with gravity, damping, the mouse impulse, constraints and the effects scripts/gen_effects.py marks cpu; not %s\n", path, why);
         return 2;
     }
     if (frames < 0) frames = sc.frames;

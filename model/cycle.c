@@ -60,6 +60,7 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->en_ground = hp->en_ground;
     sc->ground_axis = hp->ground_axis;
     sc->ground_sign = hp->ground_above ? 1 : -1;
+    STRAND_EFFECT_SCENE_OF_HW(sc, hp) /* the effects table's */
     /* A graph's edge memories: rods, then springs, each filled by EDGE writes (reset: all 0). */
     if (hp->graph) {
         sc->n_edges = hp->e_rods + hp->e_springs;
@@ -208,6 +209,7 @@ static void reset_all(cyc_model *c)
     for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
     for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
     c->s.ks = c->s.kd = c->s.ground = c->s.friction = 0;
+    STRAND_EFFECT_RESET(c->s)
     memset(c->prev_off, 0, sizeof c->prev_off);
     memset(c->init_prev, 0, sizeof c->init_prev);
     memset(c->init_ahead, 0, sizeof c->init_ahead);
@@ -1060,6 +1062,7 @@ static void strand_regfile_edge(cyc_model *c, const cyc_inputs *in, int phase_be
         case STRAND_REG_KD: c->s.kd = v; break;
         case STRAND_REG_GROUND: c->s.ground = v; break;
         case STRAND_REG_FRICTION: c->s.friction = v; break;
+        STRAND_EFFECT_REG_CASES(c->s, v) /* the effects table's registers */
         case STRAND_REG_PREV_X: c->prev_off[0] = v; break;
         case STRAND_REG_PREV_Y: c->prev_off[1] = v; break;
         case STRAND_REG_START_X: c->start[0] = v; break;

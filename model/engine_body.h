@@ -79,6 +79,7 @@ bool P(init)(SIM *s, const scene *sc, const fx_format *fmt)
     s->friction = FROM(c.friction);
     s->ground = FROM(c.ground);
     s->h = FROM(c.h);
+    STRAND_EFFECT_SIM_INIT /* the effects table's constants */
     return true;
 }
 
@@ -175,7 +176,8 @@ void P(spring_edge)(SIM *s, int e)
     }
 }
 
-/* Verlet (reference 000, damping of reference 002): v = x - x-; v -= d v; x- = x; x += v + g h^2 + F. */
+/* Verlet (reference 000, damping of reference 002): v = x - x-; v -= d v; v -= c h (v - w h) (wind);
+   x- = x; x += v + g h^2 + F. */
 bool P(verlet_node)(SIM *s, int i)
 {
     const scene *sc = s->sc;
@@ -191,6 +193,7 @@ bool P(verlet_node)(SIM *s, int i)
         NUM v = SUB(s->pos[i][k], s->prev[i][k]);
         NUM x;
         if (sc->damping > 0) v = SUB(v, MUL(v, s->damping));
+        if (sc->en_wind) v = SUB(v, MUL(SUB(v, s->wind[k]), s->drag)); /* air drag toward the wind */
         s->prev[i][k] = s->pos[i][k];
         x = ADD(s->pos[i][k], v);
         if (sc->en_gravity) x = ADD(x, s->gravity[k]);

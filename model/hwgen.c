@@ -97,6 +97,7 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->en_ground = sc->en_ground;
     hp->ground_axis = sc->en_ground ? sc->ground_axis : 1;
     hp->ground_above = !sc->en_ground || sc->ground_sign > 0;
+    STRAND_EFFECT_HW_PARAMS(hp, sc) /* the effects table's switches */
     STRAND_PARAMS_DERIVE(hp);
 }
 
@@ -136,6 +137,7 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
         PUT(STRAND_REG_GDT2_Z, s->gravity[2]);
         PUT(STRAND_REG_BOX_Z, s->box[2]);
     }
+    STRAND_EFFECT_PUTS /* the effects table's registers, for the effects the build has */
     for (int i = 0; i < sc->n_nodes; i++)
         if (sc->pinned[i]) PUT(STRAND_REG_PIN, (fx_t)hw_node_addr(&hp, i));
     if (hp.graph) {

@@ -15,10 +15,10 @@
 #include <ctype.h>
 #include <string.h>
 
-enum { S_SCENE, S_FORMAT, S_TIME, S_CHAIN, S_GRAPH, S_GRAVITY, S_MOUSE, S_CONSTRAINTS, S_SPRINGS, S_GROUND, S_COUNT };
+enum { S_SCENE, S_FORMAT, S_TIME, S_CHAIN, S_GRAPH, S_GRAVITY, S_MOUSE, S_CONSTRAINTS, S_SPRINGS, S_GROUND, STRAND_EFFECT_SECTION_ENUM S_COUNT };
 _Static_assert(S_COUNT == sizeof(((scene *)0)->section_lines) / sizeof(int), "one line slot per section");
 static const char *const section_names[S_COUNT] = {
-    "scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground",
+    "scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground", STRAND_EFFECT_SECTION_NAMES
 };
 
 /* A vector value as written: 2 or 3 components, checked against dim after parsing. */
@@ -45,6 +45,7 @@ typedef struct {
     int section_line[S_COUNT];
     /* values whose checks need the whole file */
     vec_value chain_start, chain_step, chain_end, gravity, box, velocity, prev_offset, origin;
+    STRAND_EFFECT_PARSER_FIELDS
     int n_node_lines, cap_nodes;
     vec_value *node_values;
     int n_offsets, cap_offsets;
@@ -465,6 +466,7 @@ static int handler(void *user, const char *section, const char *key, const char 
         if (!strcmp(key, "radius")) return parse_double(p, key, value, 0, 1e12, &sc->ground_radius);
         if (!strcmp(key, "friction")) return parse_double(p, key, value, 0, 1, &sc->ground_friction);
         break;
+    STRAND_EFFECT_PARSE_CASES /* the effects table's sections */
     }
     return FAIL("unknown key '%s' in [%s]", key, section);
 }
@@ -735,6 +737,13 @@ static bool finish(parser *p)
         sc->pinned[p->pins[i]] = true;
     }
 
+    STRAND_EFFECT_FINISH /* the effects table's: on when named, their keys checked */
+    {
+        scene_consts c;
+        scene_constants(sc, &c);
+        STRAND_EFFECT_CHECK_CONSTS(c)
+    }
+
     if (sc->integrator == INTEGRATOR_EULER) {
         int line = blame(p, S_TIME, "integrator");
         if (sc->en_constraints) return fail_at(p, line, "integrator: euler cannot project [constraints]; use springs or verlet");
@@ -841,9 +850,9 @@ void scene_free(scene *sc)
 
 const char *scene_effects_string(const scene *sc, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s%s%s%s%s%s", sc->en_gravity ? "gravity " : "", sc->en_mouse ? (sc->mouse == MOUSE_GRAB ? "mouse-grab " : "mouse-impulse ") : "",
+    snprintf(buf, len, "%s%s%s%s%s%s" STRAND_EFFECT_NAMES_FMT, sc->en_gravity ? "gravity " : "", sc->en_mouse ? (sc->mouse == MOUSE_GRAB ? "mouse-grab " : "mouse-impulse ") : "",
              sc->en_constraints ? (sc->rule == RULE_CENTRED ? "centred " : "pairwise ") : "", sc->en_springs ? "springs " : "",
-             sc->en_ground ? "ground " : "", sc->damping > 0 ? "damping " : "");
+             sc->en_ground ? "ground " : "", sc->damping > 0 ? "damping " : "", STRAND_EFFECT_NAMES_ARGS(sc));
     size_t n = strlen(buf);
     if (n) buf[n - 1] = 0;
     else snprintf(buf, len, "none");
@@ -910,6 +919,7 @@ void scene_constants(const scene *sc, scene_consts *c)
     c->friction = 1.0 - sc->ground_friction;
     c->ground = sc->ground_level + sc->ground_sign * sc->ground_radius;
     c->h = h;
+    STRAND_EFFECT_CONSTANTS /* the effects table's */
 }
 
 void scene_mouse_at(const scene *sc, int frame, double pos[3], bool *down)

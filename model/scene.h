@@ -12,6 +12,7 @@
 #include <stdio.h>
 
 #include "fixed.h"
+#include "strand_effects.h" /* the effects table's fields (scripts/gen_effects.py) */
 
 #ifdef __cplusplus
 extern "C" {
@@ -91,6 +92,7 @@ typedef struct {
 
     /* effects: each off unless the scene names its section */
     bool en_gravity, en_mouse, en_constraints, en_springs, en_ground;
+    STRAND_EFFECT_SCENE_FIELDS /* the effects table's (scripts/gen_effects.py) */
     double gravity[3];
     mouse_mode mouse;
     double mouse_box[3];
@@ -107,7 +109,7 @@ typedef struct {
     int ground_sign;  /* +1: nodes stay at coordinate >= level + radius; -1: <= level - radius */
     double ground_level, ground_radius, ground_friction;
 
-    int section_lines[10]; /* line of each section header, 0 if absent (scene_section_line) */
+    int section_lines[10 + STRAND_EFFECT_SECTION_COUNT]; /* line of each section header, 0 if absent (scene_section_line) */
     struct {
         int section;
         char key[24];
@@ -127,6 +129,7 @@ typedef struct {
     double friction;   /* 1 - ground friction */
     double ground;     /* the ground boundary: level +- radius */
     double h;          /* the substep */
+    STRAND_EFFECT_CONST_FIELDS /* the effects table's */
 } scene_consts;
 void scene_constants(const scene *sc, scene_consts *c);
 

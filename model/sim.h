@@ -35,6 +35,7 @@ extern "C" {
     NUM friction;   /* ground: previous position pulled toward current by this fraction (1-u) */       \
     NUM ground;     /* ground boundary: level + sign * radius */                                        \
     NUM h;          /* substep length (Euler) */                                                        \
+    STRAND_EFFECT_SIM_FIELDS(NUM) /* the effects table's constants (scripts/gen_effects.py) */          \
     NUM mouse[3];   /* mouse position sampled at the frame start */                                     \
     bool mouse_down;                                                                                    \
     int grabbed; /* node following the pointer, or -1 */                                                \

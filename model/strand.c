@@ -290,6 +290,7 @@ static int warn_constants(const scene *sc)
     if (sc->damping > 0) warnings += warn_constant(sc, scene_key_line(sc, "time", "damping"), "damping", c.damping);
     if (sc->en_mouse) warnings += warn_constant(sc, scene_key_line(sc, "mouse", "impulse"), "the mouse impulse", c.impulse);
     if (sc->en_ground) warnings += warn_constant(sc, scene_key_line(sc, "ground", "friction"), "1 - friction", c.friction);
+    STRAND_EFFECT_WARNINGS /* the effects table's constants */
     for (int e = 0; e < sc->n_edges; e++) {
         /* a chain's links share one rest length: one warning */
         if (sc->body == BODY_CHAIN && e > 0) break;

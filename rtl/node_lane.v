@@ -2,6 +2,7 @@
 `timescale 1ns / 1ps
 
 `include "strand_defs.vh"
+`include "strand_regs.vh"
 
 /*
  * node_lane - one axis of a node unit: the axis's storage and its part of the
@@ -22,7 +23,7 @@
  *
  * The Verlet step of this axis, from port A's data q, qp, qa (model/engine_body.h
  * verlet_node(), every operation a saturating fx_add / fx_mul in the model's order):
- *     v = q - qp;  v = v - v*d (EN_DAMPING);  n = q + v;  n = n + g h^2 (EN_GRAVITY);
+ *     v = q - qp;  v = v - v*d (EN_DAMPING);  v = v - (v - w h)*c h (EN_WIND);  n = q + v;  n = n + g h^2 (EN_GRAVITY);
  *     n = n + qa (EN_SPRINGS)
  * The mouse (EN_MOUSE, not GRAB): `touch` says |mouse - n| < box on this axis
  * (touch_lo < n < touch_hi, the box around the pointer that frame_ctrl forms); the
@@ -100,6 +101,7 @@ module node_lane #(
     // the run-time constants and the pointer, of this axis
     input  wire [W-1:0]  gdt2,       // g h^2
     input  wire [W-1:0]  damping,    // d
+    input  wire [`STRAND_FX_SLOTS*W-1:0] fx_consts,  // the effects table's constants (strand_regs.vh's slots)
     input  wire [W-1:0]  impulse,    // a (lane 0)
     input  wire [W:0]    touch_lo,   // mouse - box, exact: in touch when touch_lo < n < touch_hi
     input  wire [W:0]    touch_hi,   // mouse + box
@@ -283,7 +285,17 @@ module node_lane #(
             end else begin : g_no_damping
                 assign v_d = v_b;
             end
-            fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q_b), .b(v_d), .y(n1), .sat());
+            // the wind (EN_WIND): air drag toward the wind, v -= c h (v - w h)
+            wire [W-1:0] v_w;
+            if (EN_WIND) begin : g_wind
+                wire [W-1:0] rel, dw;
+                fx_add #(.W(W), .SUB(1)) u_rel (.sub(1'b1), .a(v_d), .b(fx_consts[(`STRAND_FX_WIND + AXIS)*W +: W]), .y(rel), .sat());
+                fx_mul #(.W(W), .F(F)) u_dw (.a(rel), .b(fx_consts[`STRAND_FX_DRAG*W +: W]), .y(dw), .sat(), .prod());
+                fx_add #(.W(W), .SUB(1)) u_vw (.sub(1'b1), .a(v_d), .b(dw), .y(v_w), .sat());
+            end else begin : g_no_wind
+                assign v_w = v_d;
+            end
+            fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q_b), .b(v_w), .y(n1), .sat());
             if (EN_GRAVITY) begin : g_gravity
                 fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
             end else begin : g_no_gravity
@@ -342,7 +354,9 @@ module node_lane #(
     endgenerate
     /* verilator lint_on PINCONNECTEMPTY */
 
-    // the inputs a build without their effect leaves unread
+    // the inputs a build without their effect leaves unread: the effects table's bus (each lane
+    // reads its own axis of a vector, and only the constants of the effects the build has), ...
+    wire unused_fx_consts = &{1'b0, fx_consts};
     generate
         if (!EN_DAMPING) begin : g_unused_damping
             wire unused_damping = &{1'b0, damping};

@@ -15,6 +15,9 @@ with the table NAME, made from the one source of its facts:
     timing_graph      the tensegrity of reference 001 with --order redblack: a graph's pipelined pass
     make_targets      the make targets a user sees (README.md): scripts/make_targets.tsv's user rows
     make_targets_dev  the developer targets (docs/architecture.md): its dev rows
+    effects_keys      the effects table's scene sections and keys (sim/scenes/README.md):
+                      scripts/gen_effects.py's EFFECTS
+    effects_files     the files an effect of that table is written in (docs/architecture.md)
 
 and checks that every numeric [VAR=N] a target's arguments show is VAR's default (VAR ?= N) in
 the Makefile or the files it includes (a FAIL line names each that is not).
@@ -31,6 +34,7 @@ import sys
 sys.dont_write_bytecode = True
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "scripts"))
+import gen_effects  # noqa: E402
 import gen_params  # noqa: E402
 import gen_regs  # noqa: E402
 
@@ -59,6 +63,29 @@ def parameters():
     for label, cond, why in gen_params.CHECKS:
         lines.append(f"- `{cond}`: {why}")
     return lines
+
+
+def effects_keys():
+    lines = []
+    for e in gen_effects.EFFECTS:
+        lines += [f"### `[{e['name']}]`", f"{e['title'][0].upper()}{e['title'][1:]} ({e['param']}): {e['meaning']}."
+                  + (" Verlet only." if e.get("verlet") else "")
+                  + ("" if e["cpu"] else " `cpu_rope` refuses it.") + ("" if e["cpu_fast"] else " `cpu_fast` refuses it."), "",
+                  "| key | value | range | default |", "|---|---|---|---|"]
+        for k in e["keys"]:
+            vec = "a vector (2 or 3 numbers, as `dim`): " if k["kind"] == "vec" else ""
+            lines.append(f"| `{k['key']}` | {vec}{k['what']} | {k['lo']:g} .. {k['hi']:g} | {'(required)' if k['required'] else '0'} |")
+        lines += ["", "The hardware's constants (each a register; `strand check` warns, at the key's line, when one "
+                  "rounds away):", ""]
+        for c in e["consts"]:
+            rng = f"; the scene is refused outside {c['lo']:g} .. {c['hi']:g}" if c["lo"] is not None else ""
+            lines.append(f"- `{c['symbol']}` = `{c['expr']}` (register {c['reg']}{'_X, _Y, _Z' if c.get('vector') else ''}{rng})")
+        lines.append("")
+    return lines[:-1]
+
+
+def effects_files():
+    return [f"- `{f}`: {why}" for f, why in gen_effects.HAND_WRITTEN]
 
 
 def timing(order=None, scene=DEFAULT_SCENE):
@@ -113,6 +140,7 @@ def stale_target_defaults():
 
 MAKERS = {"make_targets": lambda: make_targets("user"), "make_targets_dev": lambda: make_targets("dev"),
           "registers": registers, "parameters": parameters, "timing": timing,
+          "effects_keys": effects_keys, "effects_files": effects_files,
           "timing_pipelined": lambda: timing("redblack"),
           "timing_graph": lambda: timing("redblack", "sim/scenes/ref001_video3.scene")}
 REGION = re.compile(r"(<!-- BEGIN generated: (\w+) -->\n)(.*?)(<!-- END generated: \2 -->)", re.S)

@@ -46,6 +46,7 @@ import time
 
 sys.dont_write_bytecode = True  # no scripts/__pycache__ in the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gen_effects  # noqa: E402  (the effects table: its rows join EFFECTS)
 import synth  # noqa: E402  (make synth's builds: the body of the document)
 from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run, synth as flow_synth  # noqa: E402
 from strandflow.core import GEN, LIBSTRAND, ROOT, STRAND, Failure, file_digest, tool_version  # noqa: E402
@@ -139,7 +140,7 @@ EFFECTS = [
          scene={}, replace=graph_of,
          context=PAIRWISE,  # a graph's rods are constraints
          params=lambda b: {"GRAPH": 1, "M": 1, "K": b["M"] * b["K"], "E_RODS": b["M"] * b["K"] - 1}),
-]
+] + gen_effects.effect_rows()  # the effects table's rows (scripts/gen_effects.py: wind, ...)
 
 # The run-time part of every body: a horizontal chain pinned at node 0, its links
 # longer than their rest length, so that constraints and springs have work to do.
@@ -162,7 +163,8 @@ def doc_body():
 # The gating test's body: small, so that Yosys and Verilator take seconds.
 TEST_BUILD = {"W": 16, "F": 8, "M": 2, "K": 2, "SQRT_BITS": 6, "DIV_BITS": 6, "ITER": 2, "SUBSTEPS": 2}
 
-SECTION_ORDER = ["scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground"]
+SECTION_ORDER = ["scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground"] + \
+    [e["name"] for e in gen_effects.EFFECTS]
 
 
 def body_sections(build):

@@ -27,6 +27,10 @@ import os
 import re
 import sys
 
+sys.dont_write_bytecode = True  # no scripts/__pycache__ in the source tree
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import gen_effects  # noqa: E402  (the effects table: its enable parameters)
+
 # ---- the table ----
 #
 # name      the Verilog parameter (C field: its lower-case name); a switch (0 or 1,
@@ -72,6 +76,10 @@ PARAMS = [
     ("DEBUG",          "0",      "0", "1",    "observability", "1: the dbg port carries phase, FV, FEC, the walk and the write-back lanes (simulation); 0: dbg is one constant bit"),
     ("RAM_BLOCK_MIN",  "64",     "1", "1048576", "storage",  "a node or edge memory of at least this many entries asks for block RAM; smaller ones for LUT RAM or flip-flops"),
 ]
+
+# the effects table's switches (scripts/gen_effects.py), after the ground's
+_AT = [r[0] for r in PARAMS].index("GROUND_ABOVE") + 1
+PARAMS[_AT:_AT] = gen_effects.params()
 
 ONLY = {
     "SQRT_BITS": "EN_CONSTRAINTS || EN_SPRINGS",

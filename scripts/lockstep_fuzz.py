@@ -45,6 +45,7 @@ import sys
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 sys.dont_write_bytecode = True  # no __pycache__ in the source tree
+import gen_effects  # noqa: E402  (the effects table: its switches, draws and classes)
 from strandflow import build as flow_build, hwgen as flow_hwgen, run as flow_run  # noqa: E402
 from strandflow.core import BUILD, ROOT, Failure  # noqa: E402
 from strandflow.build import build_key, harness_dir  # noqa: E402,F401  (lockstep_soak.py uses harness_dir)
@@ -105,6 +106,13 @@ def random_build(rng, plan=None):
     # drawn likewise from the build
     mb = random.Random("mantissa " + repr(sorted(b.items()))).choice([0, 0, 6, 8, 11, 14, 17, 17, 20])
     b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if b["EN_CONSTRAINTS"] or b["EN_SPRINGS"] else 0
+    # the effects table's switches, drawn likewise from the build; effect j is on in PLAN's row j
+    # (modulo its length), so that every run covers it
+    gen_effects.fuzz_build(random.Random("effects " + repr(sorted(b.items()))), b)
+    if plan in PLAN:
+        for j, e in enumerate(gen_effects.EFFECTS):
+            if j % len(PLAN) == PLAN.index(plan):
+                b[e["param"]] = True
     return b
 
 
@@ -162,6 +170,7 @@ CLASSES = [
     ("ground x", "GROUND_AXIS = 0"), ("ground y", "GROUND_AXIS = 1"), ("ground z", "GROUND_AXIS = 2"),
     ("ground above", "GROUND_ABOVE = 1"), ("ground below", "GROUND_ABOVE = 0"),
     ("gravity", "EN_GRAVITY = 1"), ("no gravity", "EN_GRAVITY = 0"), ("damping", "EN_DAMPING = 1"),
+    *[(e["name"], f"{e['param']} = 1") for e in gen_effects.EFFECTS],
     ("impulse", "the mouse's impulse form"), ("grab", "the mouse's grab form"), ("no mouse", "EN_MOUSE = 0"),
     ("sqrt narrow", "SQRT_BITS < W - 1"), ("sqrt full", "SQRT_BITS = W - 1"),
     ("div narrow", "DIV_BITS < W - 1"), ("div full", "DIV_BITS = W - 1"),
@@ -349,12 +358,16 @@ def scene_text(build, seed, slot):
                 p = nodes[rng.randrange(n)]
             lines.append(f"event = {frame} {vec(p)} {rng.randint(0, 1)}")
             frame += rng.randint(1, 3)
+    # the effects table's sections, from a generator of their own (the lines above stay as they were)
+    for section, keys in gen_effects.fuzz_lines(random.Random(f"effects-{seed}"), build, lsb).items():
+        lines += [f"[{section}]"] + keys
     return "\n".join(lines) + "\n", facts
 
 
 def classes_of(p, facts, resets=0):
     """The classes one scene covers: p the parameters hwgen derived from it, facts what scene_text put in it."""
     c = {"2D" if p["DIM"] == 2 else "3D", "graph" if p["GRAPH"] else "chain"}
+    c.update(gen_effects.fuzz_classes(p))   # the effects table's
     rods = p["EN_CONSTRAINTS"]
     if p["GRAPH"]:
         if rods:

@@ -36,11 +36,11 @@ test-stability: $(STAB_BIN) $(STRAND)
 	  scripts/stability_cli.sh $(STRAND) || rc=1; exit $$rc
 
 test-fuzz: $(FUZZ_BIN) $(STRAND)
-	@rc=0; scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SHORT) $(FUZZ_DIR) $(FUZZ_DIR)/short.json || rc=1; \
+	@rc=0; FUZZ_DICT=$(GEN)/scene.dict scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SHORT) $(FUZZ_DIR) $(FUZZ_DIR)/short.json || rc=1; \
 	  scripts/bad_input_cli.sh $(STRAND) || rc=1; exit $$rc
 
 fuzz: bootstrap $(FUZZ_BIN) $(STRAND)
-	@scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SECONDS) $(FUZZ_DIR) $(FUZZ_DIR)/long.json
+	@FUZZ_DICT=$(GEN)/scene.dict scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SECONDS) $(FUZZ_DIR) $(FUZZ_DIR)/long.json
 
 # 10^6 frames of each hard case, SOAK_JOBS at a time; one PASS/FAIL line per case.
 soak: $(STAB_BIN)
@@ -56,7 +56,7 @@ soak: $(STAB_BIN)
 stability: bootstrap $(STAB_BIN) $(FUZZ_BIN) $(STRAND)
 	@mkdir -p $(STAB_DIR) docs/img
 	@$(STAB_BIN) --json $(STAB_DIR)/doc.json --series $(STAB_DIR)/euler_verlet.csv | tee $(STAB_DIR)/doc.log
-	@scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SHORT) $(FUZZ_DIR) $(FUZZ_DIR)/doc.json | tee -a $(STAB_DIR)/doc.log
+	@FUZZ_DICT=$(GEN)/scene.dict scripts/fuzz.sh $(FUZZ_BIN) $(FUZZ_SHORT) $(FUZZ_DIR) $(FUZZ_DIR)/doc.json | tee -a $(STAB_DIR)/doc.log
 	@$(STRAND) check sim/scenes/hard_stiff_k10000.scene --auto-substeps 4096 > $(STAB_DIR)/bound.txt 2>&1; \
 	  $(STRAND) check sim/scenes/ref004_chain.scene >> $(STAB_DIR)/bound.txt 2>&1; \
 	  $(STRAND) check sim/scenes/ref002_euler.scene --auto-substeps 4096 >> $(STAB_DIR)/bound.txt 2>&1; true

@@ -36,9 +36,9 @@ SYNTH_DOC  := docs/resources.md
 
 # The generated register map and parameter table the RTL includes (the top Makefile has the same rules).
 ifeq ($(GEN_HDRS),)
-$(SYNTH_GEN)/strand_regs.vh: scripts/gen_regs.py
+$(SYNTH_GEN)/strand_regs.vh: scripts/gen_regs.py scripts/gen_effects.py
 	python3 scripts/gen_regs.py $(SYNTH_GEN)
-$(SYNTH_GEN)/strand_params.vh: scripts/gen_params.py
+$(SYNTH_GEN)/strand_params.vh: scripts/gen_params.py scripts/gen_effects.py
 	python3 scripts/gen_params.py $(SYNTH_GEN)
 endif
 

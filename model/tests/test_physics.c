@@ -307,6 +307,30 @@ static void test_ground_bounce_and_friction(void **state)
     scene_free(&sc);
 }
 
+/* Wind (the effects table's first row): one step by hand, then the node's velocity relaxes to
+   the wind's, v_n = w h + (v_0 - w h)(1 - c h)^n, a geometric series with no gravity. */
+static void test_wind_drag_relaxes_to_the_wind(void **state)
+{
+    scene sc;
+    sim_dbl s;
+    (void)state;
+    load_text(&sc, "[time]\ndt = 0.5\n[graph]\nnode = 0 0\nvelocity = 2 0\n[wind]\nvelocity = 6 -4\ndrag = 0.4\n");
+    assert_true(sc.en_wind);
+    assert_true(sim_dbl_init(&s, &sc, NULL));
+    assert_float_equal(s.drag, 0.2, 1e-15); /* c h */
+    assert_float_equal(s.wind[0], 3, 1e-15); /* w h */
+    assert_float_equal(s.wind[1], -2, 1e-15);
+    sim_dbl_frame(&s); /* v = 1 - 0.2 (1 - 3) = 1.4; y: 0 - 0.2 (0 + 2) = -0.4 */
+    assert_float_equal(s.pos[0][0], 1.4, 1e-12);
+    assert_float_equal(s.pos[0][1], -0.4, 1e-12);
+    for (int n = 1; n < 60; n++) sim_dbl_frame(&s);
+    double vx = s.pos[0][0] - s.prev[0][0], vy = s.pos[0][1] - s.prev[0][1];
+    assert_float_equal(vx, 3 + (1 - 3) * pow(0.8, 60), 1e-9);
+    assert_float_equal(vy, -2 + (0 + 2) * pow(0.8, 60), 1e-9);
+    sim_dbl_free(&s);
+    scene_free(&sc);
+}
+
 /* ---- the CLI ---- */
 
 static int run_cli(const char *args)
@@ -461,6 +485,7 @@ int main(void)
         cmocka_unit_test(test_mouse_grab),
         cmocka_unit_test(test_nothing_named_nothing_moves),
         cmocka_unit_test(test_ground_bounce_and_friction),
+        cmocka_unit_test(test_wind_drag_relaxes_to_the_wind),
         cmocka_unit_test(test_verlet_is_time_reversible), cmocka_unit_test(test_previous_projection_keeps_energy), cmocka_unit_test(test_cli_contract),
     };
     return cmocka_run_group_tests_name("physics and CLI", tests, NULL, NULL);

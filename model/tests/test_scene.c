@@ -121,6 +121,26 @@ static void test_required_and_contradictions(void **state)
     expect_error(TIME "[chain]\nunits = 2\nnodes_per_unit = 3\nstart = 0 0\nstep = 0 0\n[constraints]\n", 3, "give 'rest'");
 }
 
+/* The effects table's sections (scripts/gen_effects.py): wind's keys, its constant's range, Euler. */
+static void test_table_effects(void **state)
+{
+    (void)state;
+    expect_error(TIME CHAIN "[wind]\nvelocity = 1 0\n", 8, "[wind] needs 'drag'");
+    expect_error(TIME CHAIN "[wind]\ndrag = 1\nvelocity = 1 0 0\n", 10, "expected 2 numbers for a 2D scene");
+    expect_error(TIME CHAIN "[wind]\ndrag = 200\n", 9, "drag: c h = 2 is outside");
+    expect_error(TIME CHAIN "[wind]\ndrag = -1\n", 9, "drag");
+    expect_error(TIME CHAIN "[wind]\ndrag = 1\ngust = 2\n", 10, "unknown key 'gust' in [wind]");
+    expect_error("[time]\ndt = 0.01\nintegrator = euler\n" CHAIN "[wind]\ndrag = 1\n", 3, "euler does not support [wind]");
+    scene sc;
+    char err[SCENE_ERR_LEN];
+    const char *path = write_scene(TIME CHAIN "[wind]\ndrag = 1\n");
+    assert_true(scene_load(&sc, path, err));
+    assert_true(sc.en_wind);
+    assert_true(sc.wind_velocity[0] == 0 && sc.wind_velocity[1] == 0); /* still air by default */
+    scene_free(&sc);
+    unlink(path);
+}
+
 static void test_graph_errors(void **state)
 {
     (void)state;
@@ -300,9 +320,9 @@ static void test_scene_edit(void **state)
     snprintf(tmp, sizeof tmp, "%s.tmp", out);
     assert_int_equal(access(tmp, F_OK), -1);
 
-    const char *bad_section[] = {"wind.speed=3"};
+    const char *bad_section[] = {"magnet.speed=3"};
     assert_false(scene_edit(in, out, 1, bad_section, err));
-    assert_string_equal(err, "'wind.speed=3': unknown section [wind]");
+    assert_string_equal(err, "'magnet.speed=3': unknown section [magnet]");
 
     const char *bad_form[] = {"frames=3"}, *bad_comment[] = {"time.frames=3 ; three"};
     assert_false(scene_edit(in, out, 1, bad_form, err));
@@ -326,7 +346,7 @@ int main(void)
         cmocka_unit_test(test_missing_file),            cmocka_unit_test(test_chain_layout_and_defaults),
         cmocka_unit_test(test_nul_byte),               cmocka_unit_test(test_accepted_forms),
         cmocka_unit_test(test_shipped_scenes_load),       cmocka_unit_test(test_scene_edit),
-        cmocka_unit_test(test_constraint_order),
+        cmocka_unit_test(test_constraint_order),         cmocka_unit_test(test_table_effects),
     };
     return cmocka_run_group_tests_name("scene files", tests, NULL, NULL);
 }
