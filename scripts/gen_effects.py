@@ -224,22 +224,16 @@ def c_header():
                        f"{rng_} (h = dt / substeps = %g)\", c.{c['name']}{idx}, scene_h(sc));")
     macro("STRAND_EFFECT_CHECK_CONSTS(c)", chk or ["/* none */"],
           "scene.c finish(): the constants within their ranges (c: the scene_consts, p, sc in scope)")
-    cons = []
-    for e in EFFECTS:
-        for c in e["consts"]:
-            if c.get("vector"):
-                cons.append(f"for (int k = 0; k < 3; k++) c->{c['name']}[k] = sc->en_{e['name']} ? {c['expr']} : 0;")
-            else:
-                cons.append(f"c->{c['name']} = sc->en_{e['name']} ? {c['expr']} : 0;")
-    macro("STRAND_EFFECT_CONSTANTS", cons, "scene_constants(): the constants (sc, c, h in scope)")
-    init = []
-    for e in EFFECTS:
-        for c in e["consts"]:
-            if c.get("vector"):
-                init.append(f"for (int k = 0; k < 3; k++) s->{c['name']}[k] = FROM(c.{c['name']}[k]);")
-            else:
-                init.append(f"s->{c['name']} = FROM(c.{c['name']});")
-    macro("STRAND_EFFECT_SIM_INIT", init, "engine_body.h init(): the engines' constants (s, c, FROM in scope)")
+    def each_const(assign):
+        """A statement a constant: assign(effect, const, index) with index "[k]" in a loop over the
+        axes for a vector, "" for a scalar."""
+        return [(f"for (int k = 0; k < 3; k++) " if c.get("vector") else "") + assign(e, c, "[k]" if c.get("vector") else "")
+                for e in EFFECTS for c in e["consts"]]
+
+    macro("STRAND_EFFECT_CONSTANTS", each_const(lambda e, c, i: f"c->{c['name']}{i} = sc->en_{e['name']} ? {c['expr']} : 0;"),
+          "scene_constants(): the constants (sc, c, h in scope)")
+    macro("STRAND_EFFECT_SIM_INIT", each_const(lambda e, c, i: f"s->{c['name']}{i} = FROM(c.{c['name']}{i});"),
+          "engine_body.h init(): the engines' constants (s, c, FROM in scope)")
     macro("STRAND_EFFECT_HW_PARAMS(hp, sc)", [f"(hp)->{e['param'].lower()} = (sc)->en_{e['name']};" for e in EFFECTS],
           "hwgen.c: the build parameter of each effect")
     macro("STRAND_EFFECT_SCENE_OF_HW(sc, hp)", [f"(sc)->en_{e['name']} = (hp)->{e['param'].lower()};" for e in EFFECTS],
@@ -262,11 +256,7 @@ def c_header():
             else:
                 dec.append(f"case STRAND_REG_{c['reg']}: (st).{c['name']} = (v); break;")
     macro("STRAND_EFFECT_REG_CASES(st, v)", dec, "cycle.c: strand_regfile's decode of the table's registers")
-    rst = []
-    for e in EFFECTS:
-        for c in e["consts"]:
-            rst.append(f"for (int k = 0; k < 3; k++) (st).{c['name']}[k] = 0;" if c.get("vector") else f"(st).{c['name']} = 0;")
-    macro("STRAND_EFFECT_RESET(st)", rst, "cycle.c: the registers after reset")
+    macro("STRAND_EFFECT_RESET(st)", each_const(lambda e, c, i: f"(st).{c['name']}{i} = 0;"), "cycle.c: the registers after reset")
     warn = []
     for e in EFFECTS:
         for c in e["consts"]:

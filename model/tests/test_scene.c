@@ -124,13 +124,20 @@ static void test_required_and_contradictions(void **state)
 /* The effects table's sections (scripts/gen_effects.py): wind's keys, its constant's range, Euler. */
 static void test_table_effects(void **state)
 {
+    static const struct {
+        const char *text;
+        int line;
+        const char *words;
+    } bad[] = {
+        {TIME CHAIN "[wind]\nvelocity = 1 0\n", 8, "[wind] needs 'drag'"},
+        {TIME CHAIN "[wind]\ndrag = 1\nvelocity = 1 0 0\n", 10, "expected 2 numbers for a 2D scene"},
+        {TIME CHAIN "[wind]\ndrag = 200\n", 9, "drag: c h = 2 is outside"}, /* h = 0.01 */
+        {TIME CHAIN "[wind]\ndrag = -1\n", 9, "drag"},
+        {TIME CHAIN "[wind]\ndrag = 1\ngust = 2\n", 10, "unknown key 'gust' in [wind]"},
+        {"[time]\ndt = 0.01\nintegrator = euler\n" CHAIN "[wind]\ndrag = 1\n", 3, "euler does not support [wind]"},
+    };
     (void)state;
-    expect_error(TIME CHAIN "[wind]\nvelocity = 1 0\n", 8, "[wind] needs 'drag'");
-    expect_error(TIME CHAIN "[wind]\ndrag = 1\nvelocity = 1 0 0\n", 10, "expected 2 numbers for a 2D scene");
-    expect_error(TIME CHAIN "[wind]\ndrag = 200\n", 9, "drag: c h = 2 is outside");
-    expect_error(TIME CHAIN "[wind]\ndrag = -1\n", 9, "drag");
-    expect_error(TIME CHAIN "[wind]\ndrag = 1\ngust = 2\n", 10, "unknown key 'gust' in [wind]");
-    expect_error("[time]\ndt = 0.01\nintegrator = euler\n" CHAIN "[wind]\ndrag = 1\n", 3, "euler does not support [wind]");
+    for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) expect_error(bad[i].text, bad[i].line, bad[i].words);
     scene sc;
     char err[SCENE_ERR_LEN];
     const char *path = write_scene(TIME CHAIN "[wind]\ndrag = 1\n");
