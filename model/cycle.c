@@ -44,7 +44,6 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->substeps = hp->substeps;
     sc->iterations = hp->iter;
     sc->integrator = INTEGRATOR_VERLET;
-    sc->damping = hp->en_damping ? 1.0 : 0.0; /* a flag only: the value comes from the DAMPING register */
     sc->body = BODY_CHAIN;
     sc->units = hp->m;
     sc->nodes_per_unit = hp->k;
@@ -205,7 +204,7 @@ static void reset_all(cyc_model *c)
         c->sc.pinned[i] = false;
     }
     for (int k = 0; k < 3; k++) c->s.gravity[k] = c->s.box[k] = c->s.mouse[k] = 0;
-    c->s.dist = c->s.impulse = c->s.damping = 0;
+    c->s.dist = c->s.impulse = 0;
     for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
     for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
     c->s.ks = c->s.kd = c->s.ground = c->s.friction = 0;
@@ -1057,7 +1056,6 @@ static void strand_regfile_edge(cyc_model *c, const cyc_inputs *in, int phase_be
         case STRAND_REG_IMPULSE: c->s.impulse = v; break;
         case STRAND_REG_BOX_X: c->s.box[0] = v; break;
         case STRAND_REG_BOX_Y: c->s.box[1] = v; break;
-        case STRAND_REG_DAMPING: c->s.damping = v; break;
         case STRAND_REG_KS: c->s.ks = v; break;
         case STRAND_REG_KD: c->s.kd = v; break;
         case STRAND_REG_GROUND: c->s.ground = v; break;

@@ -72,7 +72,6 @@ bool P(init)(SIM *s, const scene *sc, const fx_format *fmt)
         s->gravity[k] = FROM(c.gravity[k]);
         s->box[k] = FROM(sc->mouse_box[k]);
     }
-    s->damping = FROM(c.damping);
     s->impulse = FROM(c.impulse);
     s->ks = FROM(c.ks);
     s->kd = FROM(c.kd);
@@ -192,7 +191,7 @@ bool P(verlet_node)(SIM *s, int i)
     for (int k = 0; k < s->dim; k++) {
         NUM v = SUB(s->pos[i][k], s->prev[i][k]);
         NUM x;
-        if (sc->damping > 0) v = SUB(v, MUL(v, s->damping));
+        if (sc->en_damping) v = SUB(v, MUL(v, s->damping));
         if (sc->en_wind) v = SUB(v, MUL(SUB(v, s->wind[k]), s->drag)); /* air drag toward the wind */
         s->prev[i][k] = s->pos[i][k];
         x = ADD(s->pos[i][k], v);

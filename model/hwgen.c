@@ -79,7 +79,6 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->iter = sc->iterations;
     hp->substeps = sc->substeps;
     hp->en_gravity = sc->en_gravity;
-    hp->en_damping = sc->damping > 0;
     hp->en_mouse = sc->en_mouse;
     hp->grab = sc->en_mouse && sc->mouse == MOUSE_GRAB;
     hp->en_constraints = sc->en_constraints && (!hp->graph || hp->e_rods > 0);
@@ -128,7 +127,6 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
     PUT(STRAND_REG_IMPULSE, s->impulse);
     PUT(STRAND_REG_BOX_X, s->box[0]);
     PUT(STRAND_REG_BOX_Y, s->box[1]);
-    PUT(STRAND_REG_DAMPING, s->damping);
     PUT(STRAND_REG_KS, s->ks);
     PUT(STRAND_REG_KD, s->kd);
     PUT(STRAND_REG_GROUND, s->ground);

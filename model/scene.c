@@ -335,6 +335,7 @@ static int handler(void *user, const char *section, const char *key, const char 
         sc->keys[sc->n_keys++].line = p->line;
     }
 
+    STRAND_EFFECT_OTHER_KEYS /* the effects table's keys in the sections below ([time] damping) */
     switch (s) {
     case S_SCENE:
         if (!strcmp(key, "name")) {
@@ -374,7 +375,6 @@ static int handler(void *user, const char *section, const char *key, const char 
         if (!strcmp(key, "frames")) return parse_int(p, key, value, 0, SCENE_MAX_FRAMES, &sc->frames);
         if (!strcmp(key, "substeps")) return parse_int(p, key, value, 1, SCENE_MAX_SUBSTEPS, &sc->substeps);
         if (!strcmp(key, "iterations")) return parse_int(p, key, value, 1, SCENE_MAX_ITERATIONS, &sc->iterations);
-        if (!strcmp(key, "damping")) return parse_double(p, key, value, 0, 0.999999, &sc->damping);
         if (!strcmp(key, "integrator")) {
             static const char *const c[] = {"verlet", "euler", 0};
             int i;
@@ -749,7 +749,6 @@ static bool finish(parser *p)
         if (sc->en_constraints) return fail_at(p, line, "integrator: euler cannot project [constraints]; use springs or verlet");
         if (sc->en_ground) return fail_at(p, line, "integrator: euler does not support [ground]; use verlet");
         if (sc->en_mouse) return fail_at(p, line, "integrator: euler does not support [mouse]; use verlet");
-        if (sc->damping > 0) return fail_at(p, blame(p, S_TIME, "damping"), "damping: Verlet damping has no meaning for euler");
     }
 
     /* previous positions: at rest, then the whole-body velocity and offsets */
@@ -850,9 +849,9 @@ void scene_free(scene *sc)
 
 const char *scene_effects_string(const scene *sc, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s%s%s%s%s%s" STRAND_EFFECT_NAMES_FMT, sc->en_gravity ? "gravity " : "", sc->en_mouse ? (sc->mouse == MOUSE_GRAB ? "mouse-grab " : "mouse-impulse ") : "",
+    snprintf(buf, len, "%s%s%s%s%s" STRAND_EFFECT_NAMES_FMT, sc->en_gravity ? "gravity " : "", sc->en_mouse ? (sc->mouse == MOUSE_GRAB ? "mouse-grab " : "mouse-impulse ") : "",
              sc->en_constraints ? (sc->rule == RULE_CENTRED ? "centred " : "pairwise ") : "", sc->en_springs ? "springs " : "",
-             sc->en_ground ? "ground " : "", sc->damping > 0 ? "damping " : "", STRAND_EFFECT_NAMES_ARGS(sc));
+             sc->en_ground ? "ground " : "", STRAND_EFFECT_NAMES_ARGS(sc));
     size_t n = strlen(buf);
     if (n) buf[n - 1] = 0;
     else snprintf(buf, len, "none");
@@ -914,7 +913,6 @@ void scene_constants(const scene *sc, scene_consts *c)
         c->ks = sc->ks / m;
         c->kd = sc->kd_per_step ? sc->kd * h / m : sc->kd / m;
     }
-    c->damping = sc->damping;
     c->impulse = sc->mouse_impulse;
     c->friction = 1.0 - sc->ground_friction;
     c->ground = sc->ground_level + sc->ground_sign * sc->ground_radius;

@@ -76,8 +76,7 @@ typedef struct {
     int iterations; /* constraint iterations per substep */
     int pipe_steps; /* the pipelined root's and divider's iterations a stage ([format] pipe_steps;
                        timing only: hw_params.pipe_steps of a pipelined build) */
-    integrator_kind integrator;
-    double damping; /* Verlet: x+ = x + (1-d)(x - x-) + a dt^2 */
+    integrator_kind integrator; /* ([time] damping: the effects table's, below) */
 
     /* body */
     body_kind body;
@@ -124,7 +123,6 @@ typedef struct {
 typedef struct {
     double gravity[3]; /* g h^2 (Verlet: added to a position) or g (Euler) */
     double ks, kd;     /* Verlet: ks h^2/m and kd h/m (kd h^2/m per-step damper); Euler: /m */
-    double damping;    /* Verlet damping factor */
     double impulse;    /* mouse impulse */
     double friction;   /* 1 - ground friction */
     double ground;     /* the ground boundary: level +- radius */

@@ -287,7 +287,6 @@ static int warn_constants(const scene *sc)
         warnings += warn_constant(sc, scene_key_line(sc, "springs", "kd"),
                                   verlet ? (sc->kd_per_step ? "kd h^2/m" : "kd h/m") : (sc->kd_per_step ? "kd h/m" : "kd/m"), c.kd);
     }
-    if (sc->damping > 0) warnings += warn_constant(sc, scene_key_line(sc, "time", "damping"), "damping", c.damping);
     if (sc->en_mouse) warnings += warn_constant(sc, scene_key_line(sc, "mouse", "impulse"), "the mouse impulse", c.impulse);
     if (sc->en_ground) warnings += warn_constant(sc, scene_key_line(sc, "ground", "friction"), "1 - friction", c.friction);
     STRAND_EFFECT_WARNINGS /* the effects table's constants */

@@ -100,7 +100,6 @@ module node_lane #(
 
     // the run-time constants and the pointer, of this axis
     input  wire [W-1:0]  gdt2,       // g h^2
-    input  wire [W-1:0]  damping,    // d
     input  wire [`STRAND_FX_SLOTS*W-1:0] fx_consts,  // the effects table's constants (strand_regs.vh's slots)
     input  wire [W-1:0]  impulse,    // a (lane 0)
     input  wire [W:0]    touch_lo,   // mouse - box, exact: in touch when touch_lo < n < touch_hi
@@ -280,7 +279,7 @@ module node_lane #(
             wire [W-1:0] v_d, n1, n_g;
             if (EN_DAMPING) begin : g_damping
                 wire [W-1:0] dv;
-                fx_mul #(.W(W), .F(F)) u_dv (.a(v_b), .b(damping), .y(dv), .sat(), .prod());
+                fx_mul #(.W(W), .F(F)) u_dv (.a(v_b), .b(fx_consts[`STRAND_FX_DAMPING*W +: W]), .y(dv), .sat(), .prod());
                 fx_add #(.W(W), .SUB(1)) u_vd (.sub(1'b1), .a(v_b), .b(dv), .y(v_d), .sat());
             end else begin : g_no_damping
                 assign v_d = v_b;
@@ -358,9 +357,6 @@ module node_lane #(
     // reads its own axis of a vector, and only the constants of the effects the build has), ...
     wire unused_fx_consts = &{1'b0, fx_consts};
     generate
-        if (!EN_DAMPING) begin : g_unused_damping
-            wire unused_damping = &{1'b0, damping};
-        end
         if (!EN_GRAVITY) begin : g_unused_gravity
             wire unused_gravity = &{1'b0, gdt2};
         end

@@ -69,7 +69,6 @@ module node_unit #(
     input  wire [DIM*(W+1)-1:0] touch_hi, //   W+1 bits per lane, exact
     input  wire [DIM*W-1:0] mouse,
     input  wire             mouse_down,
-    input  wire [W-1:0]     damping,
     input  wire [`STRAND_FX_SLOTS*W-1:0] fx_consts,  // the effects table's constants, to every lane
     input  wire [W-1:0]     impulse,
     input  wire [W-1:0]     ground,
@@ -553,7 +552,7 @@ module node_unit #(
                 .grab_w(grab_w), .pin_w(pin_w),
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
-                .gdt2(gdt2[k*W +: W]), .damping(damping), .impulse(impulse), .fx_consts(fx_consts),
+                .gdt2(gdt2[k*W +: W]), .impulse(impulse), .fx_consts(fx_consts),
                 .touch_lo(touch_lo_u[k*(W+1) +: W+1]), .touch_hi(touch_hi_u[k*(W+1) +: W+1]),
                 .mouse(mouse[k*W +: W]), .in_touch(in_touch), .ground(ground), .friction(friction),
                 .q(a_pos[k*W +: W]), .qp(a_prev[k*W +: W]), .qa(a_acc[k*W +: W]), .b_data(b_pos_raw[k*W +: W]),

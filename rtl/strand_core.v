@@ -78,7 +78,7 @@ module strand_core #(
 
     // ---- registers ----
     wire [DW-1:0]  gdt2, box, start_pos, step_pos, prev_off, load_pos, load_prev;
-    wire [W-1:0]   rest_len, impulse, damping, ks, kd, ground, friction, edge_rest;
+    wire [W-1:0]   rest_len, impulse, ks, kd, ground, friction, edge_rest;
     wire [`STRAND_FX_SLOTS*W-1:0] fx_consts;  // the effects table's constants (strand_regs.vh)
     wire           cmd_init, pin_we, node_we_any, edge_we_any, irq_ack;
     strand_regfile #(
@@ -87,7 +87,7 @@ module strand_core #(
         .clk(clk), .reset(reset), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
         .gdt2(gdt2), .box(box), .start_pos(start_pos),
         .step_pos(step_pos), .prev_off(prev_off), .load_pos(load_pos), .load_prev(load_prev),
-        .rest_len(rest_len), .impulse(impulse), .damping(damping), .ks(ks), .kd(kd), .ground(ground),
+        .rest_len(rest_len), .impulse(impulse), .ks(ks), .kd(kd), .ground(ground),
         .friction(friction), .edge_rest(edge_rest), .fx_consts(fx_consts),
         .cmd_init(cmd_init), .pin_we(pin_we), .node_we(node_we_any), .edge_we(edge_we_any), .irq_ack(irq_ack));
 
@@ -375,7 +375,7 @@ module strand_core #(
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
                 .gdt2(gdt2), .touch_lo(touch_lo), .touch_hi(touch_hi),
-                .mouse(mouse_q), .mouse_down(mouse_down_q), .damping(damping), .impulse(impulse), .fx_consts(fx_consts),
+                .mouse(mouse_q), .mouse_down(mouse_down_q), .impulse(impulse), .fx_consts(fx_consts),
                 .ground(ground), .friction(friction),
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),
                 .a_idx(seq_rd[IW-1:0]), .a_pos(a_pos_all[u*DW +: DW]), .a_prev(a_prev_all[u*DW +: DW]),

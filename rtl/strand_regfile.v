@@ -15,7 +15,7 @@
  * PIN, NODE, EDGE, CMD and IRQ_ACK are strobes: they act in the cycle of the write
  * (strand_core decides which may act when).
  *
- * The effects table's constants (scripts/gen_effects.py: wind, ...) come out on one bus,
+ * The effects table's constants (scripts/gen_effects.py: damping, wind, ...) come out on one bus,
  * fx_consts, whose slots strand_regs.vh names (`STRAND_FX_<CONST>): adding such an effect
  * changes no port here, in strand_core or in node_unit.
  *
@@ -41,7 +41,6 @@ module strand_regfile #(
     output wire [DIM*W-1:0] load_prev,
     output wire [W-1:0]     rest_len,
     output wire [W-1:0]     impulse,
-    output wire [W-1:0]     damping,
     output wire [W-1:0]     ks,
     output wire [W-1:0]     kd,
     output wire [W-1:0]     ground,
@@ -72,12 +71,11 @@ module strand_regfile #(
     localparam [0:0] USE_LOAD    = GRAPH;    // LOAD_*, EDGE_REST: NODE and EDGE writes
 
     // ---- the scalar constants ----
-    reg [W-1:0] rest_q, impulse_q, damping_q, ks_q, kd_q, ground_q, friction_q, edge_rest_q;
+    reg [W-1:0] rest_q, impulse_q, ks_q, kd_q, ground_q, friction_q, edge_rest_q;
     always @(posedge clk) begin
         if (reset) begin
             rest_q      <= {W{1'b0}};
             impulse_q   <= {W{1'b0}};
-            damping_q   <= {W{1'b0}};
             ks_q        <= {W{1'b0}};
             kd_q        <= {W{1'b0}};
             ground_q    <= {W{1'b0}};
@@ -87,7 +85,6 @@ module strand_regfile #(
             case (cfg_addr)
                 `STRAND_REG_DIST:      rest_q      <= cfg_data;
                 `STRAND_REG_IMPULSE:   impulse_q   <= cfg_data;
-                `STRAND_REG_DAMPING:   damping_q   <= cfg_data;
                 `STRAND_REG_KS:        ks_q        <= cfg_data;
                 `STRAND_REG_KD:        kd_q        <= cfg_data;
                 `STRAND_REG_GROUND:    ground_q    <= cfg_data;
@@ -99,7 +96,6 @@ module strand_regfile #(
     end
     assign rest_len  = USE_REST    ? rest_q      : {W{1'b0}};
     assign impulse   = USE_IMPULSE ? impulse_q   : {W{1'b0}};
-    assign damping   = EN_DAMPING  ? damping_q   : {W{1'b0}};
     assign ks        = EN_SPRINGS  ? ks_q        : {W{1'b0}};
     assign kd        = EN_SPRINGS  ? kd_q        : {W{1'b0}};
     assign ground    = EN_GROUND   ? ground_q    : {W{1'b0}};

@@ -68,13 +68,16 @@ def parameters():
 def effects_keys():
     lines = []
     for e in gen_effects.EFFECTS:
-        lines += [f"### `[{e['name']}]`", f"{e['title'][0].upper()}{e['title'][1:]} ({e['param']}): {e['meaning']}."
+        head = f"### `[{e['name']}]`" if gen_effects.own(e) else f"### {e['title']}: in `[{gen_effects.sec(e)}]`"
+        lines += [head, f"{e['title'][0].upper()}{e['title'][1:]} ({e['param']}): {e['meaning']}."
                   + (" Verlet only." if e.get("verlet") else "")
                   + ("" if e["cpu"] else " `cpu_rope` refuses it.") + ("" if e["cpu_fast"] else " `cpu_fast` refuses it."), "",
                   "| key | value | range | default |", "|---|---|---|---|"]
         for k in e["keys"]:
             vec = "a vector (2 or 3 numbers, as `dim`): " if k["kind"] == "vec" else ""
             lines.append(f"| `{k['key']}` | {vec}{k['what']} | {k['lo']:g} .. {k['hi']:g} | {'(required)' if k['required'] else '0'} |")
+        if not gen_effects.own(e):
+            lines += ["", f"On when `{e['on'].replace('sc->', '')}`."]
         lines += ["", "The hardware's constants (each a register; `strand check` warns, at the key's line, when one "
                   "rounds away):", ""]
         for c in e["consts"]:

@@ -91,10 +91,6 @@ EFFECTS = [
     dict(name="gravity", title="gravity",
          scene=GRAVITY,
          params={"EN_GRAVITY": 1}),
-    dict(name="damping", title="Verlet damping",
-         scene={"time": ["damping = 0.02"]},
-         context=GRAVITY,  # damping acts on velocity: without a force the chain never moves
-         params={"EN_DAMPING": 1}),
     dict(name="mouse", title="mouse impulse",
          scene={"mouse": ["box = 2 2", "impulse = 1", "event = 0 -2.5 8 1", "event = 2 -2.5 8 0",
                           "event = 3 0.5 8 1"]},

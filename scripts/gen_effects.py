@@ -25,6 +25,9 @@ docs/architecture.md ("How to add an effect") walks through it.
 
 A row:
   name      the effect and its scene section [name]; the effect is on when the section is there
+  section   (optional) the section its keys are in instead (damping: [time]); then
+  on        says when it is on (a C expression of the scene, sc)
+  after     (optional) the parameter its switch follows in the parameter table
   title     what the documents call it
   param     its enable parameter of strand_core (a switch, default 0)
   meaning   the parameter's description (docs/architecture.md's parameter table)
@@ -34,7 +37,8 @@ A row:
             per axis, _X _Y _Z) and a field of the engines' state: name, expr (a C expression of
             the scene's keys, `sc->NAME_KEY`, the substep `h` and, for a vector, the axis `k`),
             lo, hi (the range the constant must keep, else the scene is refused), symbol (how
-            warnings name it), key (the key a warning points at), what (the register map)
+            warnings name it), key (the key a warning points at), what (the register map),
+            addr (optional: its fixed address, for a register older than the table)
   verlet    the effect acts in the Verlet step only: explicit Euler refuses it
   cpu       model/cpu_rope.c (the CPU baseline) runs it; else it refuses such a scene
   cpu_fast  model/cpu_fast.c (the optimised CPU program) runs it; else it refuses such a scene
@@ -46,6 +50,27 @@ import os
 import sys
 
 EFFECTS = [
+    dict(
+        name="damping",
+        title="Verlet damping",
+        param="EN_DAMPING",
+        after="EN_GRAVITY",
+        meaning="Verlet damping v -= v d",
+        section="time", on="sc->damping > 0",
+        keys=[
+            dict(key="damping", kind="num", lo=0, hi=0.999999, required=False,
+                 what="Verlet damping d: x+ = x + (1 - d)(x - x-) + a h^2 (0: none)"),
+        ],
+        consts=[
+            dict(name="damping", reg="DAMPING", addr=6, expr="sc->damping", lo=None, hi=None, symbol="damping",
+                 key="damping", what="Verlet damping d, 0 <= d < 1 (Q.F)"),
+        ],
+        verlet=True,
+        cpu=True,
+        cpu_fast=True,
+        doc=dict(scene=["damping = 0.02"], context={"gravity": ["accel = 0.5 -9.8"]}),  # it acts on velocity: a force first
+        fuzz=dict(p=0.4, draws={"damping": (0.0, 0.3)}),
+    ),
     dict(
         name="wind",
         title="air drag in a wind",
@@ -84,21 +109,43 @@ HAND_WRITTEN = [
 AXES = "XYZ"
 
 
-def registers(first):
-    """The table's registers from address `first`: (name, address, what)."""
+def sec(e):
+    """The scene section an effect's keys are in."""
+    return e.get("section", e["name"])
+
+
+def own(e):
+    """Does the effect have a section of its own (on when it is there)?"""
+    return sec(e) == e["name"]
+
+
+def field(e, k):
+    """The scene's field of a key: NAME_KEY, or NAME when the key is the effect's name."""
+    return e["name"] if k["key"] == e["name"] else f"{e['name']}_{k['key']}"
+
+
+def registers(taken):
+    """The table's registers, (name, address, what): those with a fixed address at it, the others
+    from the first address above every one in `taken` (the hand-written map's) and the fixed ones."""
+    fixed = [c["addr"] for e in EFFECTS for c in e["consts"] if "addr" in c]
+    nxt = max(list(taken) + fixed) + 1
     out = []
     for e in EFFECTS:
         for c in e["consts"]:
             names = [f"{c['reg']}_{a}" for a in AXES] if c.get("vector") else [c["reg"]]
             for i, n in enumerate(names):
                 what = c["what"] + (f", {AXES[i].lower()}" + (" (DIM = 3)" if i == 2 else "") + " (Q.F)" if c.get("vector") else "")
-                out.append((n, first + len(out), what))
+                if "addr" in c:
+                    out.append((n, c["addr"] + i, what))
+                else:
+                    out.append((n, nxt, what))
+                    nxt += 1
     return out
 
 
 def params():
-    """The table's rows for gen_params.PARAMS."""
-    return [(e["param"], "0", "0", "1", e["name"], e["meaning"]) for e in EFFECTS]
+    """The table's rows for gen_params.PARAMS, each with the parameter it follows (None: the default place)."""
+    return [((e["param"], "0", "0", "1", e["name"], e["meaning"]), e.get("after")) for e in EFFECTS]
 
 
 def slots():
@@ -112,7 +159,7 @@ def slots():
 
 def effect_rows():
     """effects.py's rows (see its EFFECTS): the document and the gating check."""
-    return [dict(name=e["name"], title=e["title"], scene={e["name"]: list(e["doc"]["scene"])},
+    return [dict(name=e["name"], title=e["title"], scene={sec(e): list(e["doc"]["scene"])},
                  context=e["doc"].get("context"), params={e["param"]: 1}) for e in EFFECTS]
 
 
@@ -134,7 +181,7 @@ def fuzz_lines(rng, build, lsb):
             n = build["DIM"] if key["kind"] == "vec" else 1
             vals = [round(rng.uniform(lo, hi) / lsb) * lsb for _ in range(n)]
             lines.append(f"{key['key']} = " + " ".join(f"{v:.9g}" for v in vals))
-        out[e["name"]] = lines
+        out.setdefault(sec(e), []).extend(lines)
     return out
 
 
@@ -159,20 +206,30 @@ def c_header():
             L.append(f"    {body[-1]}")
         L.append("")
 
-    n = len(EFFECTS)
-    L.append(f"#define STRAND_EFFECT_SECTION_COUNT {n} /* scene sections of the table's effects */")
+    owned = [e for e in EFFECTS if own(e)]
+    L.append(f"#define STRAND_EFFECT_SECTION_COUNT {len(owned)} /* scene sections of the table's effects */")
     L.append("")
-    macro("STRAND_EFFECT_SECTION_ENUM", [f"S_{e['name'].upper()}," for e in EFFECTS], "scene.c: their section indices")
-    macro("STRAND_EFFECT_SECTION_NAMES", [f"\"{e['name']}\"," for e in EFFECTS], "scene.c: their section names")
+    macro("STRAND_EFFECT_SECTION_ENUM", [f"S_{e['name'].upper()}," for e in owned], "scene.c: their section indices")
+    macro("STRAND_EFFECT_SECTION_NAMES", [f"\"{e['name']}\"," for e in owned], "scene.c: their section names")
     fields = []
     for e in EFFECTS:
-        fields.append(f"bool en_{e['name']}; /* {e['title']}: [{e['name']}] is there */")
+        fields.append(f"bool en_{e['name']}; /* {e['title']}: " + (f"[{e['name']}] is there */" if own(e) else f"{e['on']} */"))
         for k in e["keys"]:
-            fields.append(f"double {e['name']}_{k['key']}{'[3]' if k['kind'] == 'vec' else ''};")
+            fields.append(f"double {field(e, k)}{'[3]' if k['kind'] == 'vec' else ''};")
     macro("STRAND_EFFECT_SCENE_FIELDS", fields, "scene.h: the scene's fields (the keys as written)")
     macro("STRAND_EFFECT_PARSER_FIELDS",
-          [f"vec_value {e['name']}_{k['key']};" for e in EFFECTS for k in e["keys"] if k["kind"] == "vec"] or ["/* none */"],
+          [f"vec_value {field(e, k)};" for e in EFFECTS for k in e["keys"] if k["kind"] == "vec"] or ["/* none */"],
           "scene.c: the vector values checked against dim at the end")
+
+    def parse(e, k):
+        if k["kind"] == "vec":
+            return f"return parse_vec(p, key, value, &p->{field(e, k)});"
+        return f"return parse_double(p, key, value, {k['lo']!r}, {k['hi']!r}, &sc->{field(e, k)});"
+
+    macro("STRAND_EFFECT_OTHER_KEYS",
+          [f"if (s == S_{sec(e).upper()} && !strcmp(key, \"{k['key']}\")) {parse(e, k)}"
+           for e in EFFECTS if not own(e) for k in e["keys"]] or ["/* none */"],
+          "scene.c: the handler's keys of table effects in other sections (s, p, sc, key, value in scope)")
     macro("STRAND_EFFECT_CONST_FIELDS",
           [f"double {c['name']}{'[3]' if c.get('vector') else ''}; /* {c['symbol']} */" for e in EFFECTS for c in e["consts"]],
           "scene.h: scene_consts, the constants before rounding")
@@ -180,25 +237,20 @@ def c_header():
           [f"NUM {c['name']}{'[3]' if c.get('vector') else ''}; /* {c['symbol']} */" for e in EFFECTS for c in e["consts"]],
           "sim.h: the engines' constants")
     cases = []
-    for e in EFFECTS:
+    for e in owned:
         cases.append(f"case S_{e['name'].upper()}:")
-        for k in e["keys"]:
-            fld = f"{e['name']}_{k['key']}"
-            if k["kind"] == "vec":
-                cases.append(f"    if (!strcmp(key, \"{k['key']}\")) return parse_vec(p, key, value, &p->{fld});")
-            else:
-                cases.append(f"    if (!strcmp(key, \"{k['key']}\")) return parse_double(p, key, value, {k['lo']!r}, {k['hi']!r}, &sc->{fld});")
+        cases += [f"    if (!strcmp(key, \"{k['key']}\")) {parse(e, k)}" for k in e["keys"]]
         cases.append("    break;")
     macro("STRAND_EFFECT_PARSE_CASES", cases, "scene.c: the handler's cases (p, sc, key, value in scope)")
     fin = []
     for e in EFFECTS:
-        S = f"S_{e['name'].upper()}"
-        fin.append(f"sc->en_{e['name']} = p->section_line[{S}] != 0;")
+        S = f"S_{sec(e).upper()}"
+        fin.append(f"sc->en_{e['name']} = " + (f"p->section_line[{S}] != 0;" if own(e) else f"{e['on']};"))
         fin.append(f"if (sc->en_{e['name']}) {{")
         for k in e["keys"]:
-            fld = f"{e['name']}_{k['key']}"
+            fld = field(e, k)
             if k["required"]:
-                fin.append(f"    if (!key_line(p, {S}, \"{k['key']}\")) return fail_at(p, blame(p, {S}, NULL), \"[{e['name']}] needs '{k['key']}'\");")
+                fin.append(f"    if (!key_line(p, {S}, \"{k['key']}\")) return fail_at(p, blame(p, {S}, NULL), \"[{sec(e)}] needs '{k['key']}'\");")
             if k["kind"] == "vec":
                 fin.append(f"    if (!check_vec(p, &p->{fld}, \"{k['key']}\")) return false;")
                 fin.append(f"    for (int k_ = 0; k_ < 3; k_++) {{")
@@ -206,9 +258,13 @@ def c_header():
                 fin.append(f"            return fail_at(p, p->{fld}.line, \"{k['key']}: each value in [%g, %g]\", {k['lo']!r}, {k['hi']!r});")
                 fin.append(f"        sc->{fld}[k_] = p->{fld}.v[k_];")
                 fin.append("    }")
-        if e.get("verlet"):
+        if e.get("verlet") and own(e):
             fin.append(f"    if (sc->integrator == INTEGRATOR_EULER) return fail_at(p, blame(p, S_TIME, \"integrator\"), "
                        f"\"integrator: euler does not support [{e['name']}]; use verlet\");")
+        elif e.get("verlet"):
+            k0 = e["keys"][0]["key"]
+            fin.append(f"    if (sc->integrator == INTEGRATOR_EULER) return fail_at(p, blame(p, {S}, \"{k0}\"), "
+                       f"\"{k0}: {e['title']} has no meaning for euler\");")
         fin.append("}")
     macro("STRAND_EFFECT_FINISH", fin, "scene.c finish(): the effects on, their required keys and vectors")
     chk = []
@@ -220,7 +276,7 @@ def c_header():
             rng_ = f"{c['lo']!r} <= {c['symbol']} <= {c['hi']!r}"
             loop = "for (int k = 0; k < sc->dim; k++) " if c.get("vector") else ""
             chk.append(f"if (sc->en_{e['name']}) {loop}if (c.{c['name']}{idx} < {c['lo']!r} || c.{c['name']}{idx} > {c['hi']!r}) "
-                       f"return fail_at(p, blame(p, S_{e['name'].upper()}, \"{c['key']}\"), \"{c['key']}: {c['symbol']} = %g is outside "
+                       f"return fail_at(p, blame(p, S_{sec(e).upper()}, \"{c['key']}\"), \"{c['key']}: {c['symbol']} = %g is outside "
                        f"{rng_} (h = dt / substeps = %g)\", c.{c['name']}{idx}, scene_h(sc));")
     macro("STRAND_EFFECT_CHECK_CONSTS(c)", chk or ["/* none */"],
           "scene.c finish(): the constants within their ranges (c: the scene_consts, p, sc in scope)")
@@ -260,7 +316,7 @@ def c_header():
     warn = []
     for e in EFFECTS:
         for c in e["consts"]:
-            line = f"scene_key_line(sc, \"{e['name']}\", \"{c['key']}\")"
+            line = f"scene_key_line(sc, \"{sec(e)}\", \"{c['key']}\")"
             if c.get("vector"):
                 warn.append(f"if (sc->en_{e['name']}) for (int k = 0; k < sc->dim; k++) {{")
                 warn.append(f"    snprintf(what, sizeof what, \"{c['symbol']} (%c)\", \"xyz\"[k]);")

@@ -57,7 +57,6 @@ PARAMS = [
     ("ITER",           "1",      "1", "1024", "time",        "constraint passes per substep"),
     ("SUBSTEPS",       "1",      "1", "1024", "time",        "substeps per frame"),
     ("EN_GRAVITY",     "1",      "0", "1",    "gravity",     "add g h^2 in the Verlet step"),
-    ("EN_DAMPING",     "0",      "0", "1",    "damping",     "Verlet damping v -= v d"),
     ("EN_MOUSE",       "1",      "0", "1",    "mouse",       "the mouse: the reference-000 impulse, or with GRAB the grab form"),
     ("GRAB",           "0",      "0", "1",    "mouse",       "with EN_MOUSE: the nearest node in the box follows the pointer"),
     ("EN_CONSTRAINTS", "1",      "0", "1",    "constraints", "distance constraints (rods, struts, chain links)"),
@@ -77,9 +76,11 @@ PARAMS = [
     ("RAM_BLOCK_MIN",  "64",     "1", "1048576", "storage",  "a node or edge memory of at least this many entries asks for block RAM; smaller ones for LUT RAM or flip-flops"),
 ]
 
-# the effects table's switches (scripts/gen_effects.py), after the ground's
-_AT = [r[0] for r in PARAMS].index("GROUND_ABOVE") + 1
-PARAMS[_AT:_AT] = gen_effects.params()
+# the effects table's switches (scripts/gen_effects.py): each after the parameter its row names,
+# or after the ground's
+for _row, _after in gen_effects.params():
+    _at = [r[0] for r in PARAMS].index(_after or "GROUND_ABOVE") + 1
+    PARAMS[_at:_at] = [_row]
 
 ONLY = {
     "SQRT_BITS": "EN_CONSTRAINTS || EN_SPRINGS",

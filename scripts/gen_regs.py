@@ -21,7 +21,6 @@ REGS = [
     ("IMPULSE", 3, "mouse impulse a (Q.F)"),
     ("BOX_X", 4, "mouse in-touch half-width minX (Q.F)"),
     ("BOX_Y", 5, "mouse in-touch half-width minY (Q.F)"),
-    ("DAMPING", 6, "Verlet damping d, 0 <= d < 1 (Q.F)"),
     ("START_X", 7, "initial position of node 0, x (Q.F)"),
     ("START_Y", 8, "initial position of node 0, y (Q.F)"),
     ("STEP_X", 9, "initial offset from one node to the next, x (Q.F)"),
@@ -50,7 +49,7 @@ REGS = [
     ("EDGE", 32, "GRAPH: append an edge {spring, b, a} (addresses {unit, node}) to the rod or the spring memory; idle only"),
     ("IRQ_ACK", 33, "write: clear the frame-done interrupt (irq)"),
 ]
-REGS += gen_effects.registers(len(REGS))
+REGS = sorted(REGS + gen_effects.registers(r[1] for r in REGS), key=lambda r: r[1])
 
 
 def main():

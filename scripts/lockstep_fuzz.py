@@ -74,7 +74,7 @@ def random_build(rng, plan=None):
     w = rng.choice([12, 16, 18, 20, 24, 32])
     b = {"W": w, "M": rng.randint(1, 4), "K": rng.randint(1, 6),
          "ITER": rng.randint(1, 3), "SUBSTEPS": rng.randint(1, 2),
-         "EN_GRAVITY": rng.random() < 0.8, "EN_DAMPING": rng.random() < 0.4, "EN_MOUSE": rng.random() < 0.7,
+         "EN_GRAVITY": rng.random() < 0.8, "EN_MOUSE": rng.random() < 0.7,
          "EN_CONSTRAINTS": rng.random() < 0.85, "RULE": rng.randint(0, 1),
          "EN_SPRINGS": rng.random() < 0.4, "EN_GROUND": rng.random() < 0.3, "GROUND_AXIS": rng.randint(0, 1),
          "GROUND_ABOVE": rng.random() < 0.5, "DIM": rng.choice([2, 2, 3]), "GRAPH": rng.random() < 0.3}
@@ -107,12 +107,11 @@ def random_build(rng, plan=None):
     mb = random.Random("mantissa " + repr(sorted(b.items()))).choice([0, 0, 6, 8, 11, 14, 17, 17, 20])
     b["MANTISSA"] = (plan or {}).get("MANTISSA", mb) if b["EN_CONSTRAINTS"] or b["EN_SPRINGS"] else 0
     # the effects table's switches, drawn likewise from the build; effect j is on in PLAN's row j
-    # (modulo its length), so that every run covers it
+    # (modulo its length), so that every run covers it, and a row's own value wins
     gen_effects.fuzz_build(random.Random("effects " + repr(sorted(b.items()))), b)
     if plan in PLAN:
         for j, e in enumerate(gen_effects.EFFECTS):
-            if j % len(PLAN) == PLAN.index(plan):
-                b[e["param"]] = True
+            b[e["param"]] = bool(plan.get(e["param"], b[e["param"]] or j % len(PLAN) == PLAN.index(plan)))
     return b
 
 
@@ -169,7 +168,7 @@ CLASSES = [
     ("graph rods only", "a graph without springs"),
     ("ground x", "GROUND_AXIS = 0"), ("ground y", "GROUND_AXIS = 1"), ("ground z", "GROUND_AXIS = 2"),
     ("ground above", "GROUND_ABOVE = 1"), ("ground below", "GROUND_ABOVE = 0"),
-    ("gravity", "EN_GRAVITY = 1"), ("no gravity", "EN_GRAVITY = 0"), ("damping", "EN_DAMPING = 1"),
+    ("gravity", "EN_GRAVITY = 1"), ("no gravity", "EN_GRAVITY = 0"),
     *[(e["name"], f"{e['param']} = 1") for e in gen_effects.EFFECTS],
     ("impulse", "the mouse's impulse form"), ("grab", "the mouse's grab form"), ("no mouse", "EN_MOUSE = 0"),
     ("sqrt narrow", "SQRT_BITS < W - 1"), ("sqrt full", "SQRT_BITS = W - 1"),
@@ -270,8 +269,6 @@ def scene_text(build, seed, slot):
              f"mantissa = {build.get('MANTISSA', 0)}",
              f"pipe_steps = {build.get('PIPE_STEPS', 1)}",
              "[time]", "dt = 1", f"frames = {frames}", f"substeps = {build['SUBSTEPS']}", f"iterations = {build['ITER']}"]
-    if build["EN_DAMPING"]:
-        lines.append(f"damping = {rng.uniform(lsb * 4, 0.3):.6f}")
     pins = sorted(rng.sample(range(n), rng.randint(0, min(3, n))))
     nodes = [[start[k] + i * step[k] + (rng.uniform(-1, 1) * rest / 2 if graph and slot != 2 else 0) for k in range(3)]
              for i in range(n)]
@@ -358,9 +355,14 @@ def scene_text(build, seed, slot):
                 p = nodes[rng.randrange(n)]
             lines.append(f"event = {frame} {vec(p)} {rng.randint(0, 1)}")
             frame += rng.randint(1, 3)
-    # the effects table's sections, from a generator of their own (the lines above stay as they were)
+    # the effects table's keys, from a generator of their own: into their section (after its
+    # header when the scene has it, else a section of their own at the end)
     for section, keys in gen_effects.fuzz_lines(random.Random(f"effects-{seed}"), build, lsb).items():
-        lines += [f"[{section}]"] + keys
+        at = lines.index(f"[{section}]") + 1 if f"[{section}]" in lines else None
+        if at is None:
+            lines += [f"[{section}]"] + keys
+        else:
+            lines[at:at] = keys
     return "\n".join(lines) + "\n", facts
 
 
@@ -407,8 +409,6 @@ def classes_of(p, facts, resets=0):
         c.add("ground " + "xyz"[p["GROUND_AXIS"]])
         c.add("ground above" if p["GROUND_ABOVE"] else "ground below")
     c.add("gravity" if p["EN_GRAVITY"] else "no gravity")
-    if p["EN_DAMPING"]:
-        c.add("damping")
     c.add(("grab" if p["GRAB"] else "impulse") if p["EN_MOUSE"] else "no mouse")
     if (rods and not p["MANTISSA"]) or p["EN_SPRINGS"]:   # the root and the divider in use
         c.add("sqrt full" if p["SQRT_BITS"] == p["W"] - 1 else "sqrt narrow")

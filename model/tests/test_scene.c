@@ -121,7 +121,8 @@ static void test_required_and_contradictions(void **state)
     expect_error(TIME "[chain]\nunits = 2\nnodes_per_unit = 3\nstart = 0 0\nstep = 0 0\n[constraints]\n", 3, "give 'rest'");
 }
 
-/* The effects table's sections (scripts/gen_effects.py): wind's keys, its constant's range, Euler. */
+/* The effects table's keys (scripts/gen_effects.py): wind's section, its constant's range, Euler;
+   damping's key in [time]. */
 static void test_table_effects(void **state)
 {
     static const struct {
@@ -135,6 +136,8 @@ static void test_table_effects(void **state)
         {TIME CHAIN "[wind]\ndrag = -1\n", 9, "drag"},
         {TIME CHAIN "[wind]\ndrag = 1\ngust = 2\n", 10, "unknown key 'gust' in [wind]"},
         {"[time]\ndt = 0.01\nintegrator = euler\n" CHAIN "[wind]\ndrag = 1\n", 3, "euler does not support [wind]"},
+        {"[time]\ndt = 0.01\nintegrator = euler\ndamping = 0.1\n" CHAIN, 4, "damping: Verlet damping has no meaning for euler"},
+        {"[time]\ndt = 0.01\ndamping = 1\n" CHAIN, 3, "damping"}, /* d < 1 */
     };
     (void)state;
     for (size_t i = 0; i < sizeof bad / sizeof bad[0]; i++) expect_error(bad[i].text, bad[i].line, bad[i].words);
