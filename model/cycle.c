@@ -49,7 +49,6 @@ bool cyc_init(cyc_model *c, const hw_params *hp)
     sc->nodes_per_unit = hp->k;
     sc->n_nodes = n;
     sc->mass = 1;
-    sc->en_gravity = hp->en_gravity;
     sc->en_mouse = hp->en_mouse;
     sc->mouse = c->hp.grab ? MOUSE_GRAB : MOUSE_IMPULSE;
     sc->en_constraints = hp->en_constraints;
@@ -203,7 +202,7 @@ static void reset_all(cyc_model *c)
         memset(c->s.prev[i], 0, sizeof c->s.prev[i]);
         c->sc.pinned[i] = false;
     }
-    for (int k = 0; k < 3; k++) c->s.gravity[k] = c->s.box[k] = c->s.mouse[k] = 0;
+    for (int k = 0; k < 3; k++) c->s.box[k] = c->s.mouse[k] = 0;
     c->s.dist = c->s.impulse = 0;
     for (int e = 0; e < c->sc.n_edges; e++) c->s.rest[e] = 0;
     for (int i = 0; i < n; i++) memset(c->s.acc[i], 0, sizeof c->s.acc[i]);
@@ -1046,8 +1045,6 @@ static void strand_regfile_edge(cyc_model *c, const cyc_inputs *in, int phase_be
     if (in->cfg_we) {
         fx_t v = from_word(f, in->cfg_data);
         switch (in->cfg_addr) {
-        case STRAND_REG_GDT2_X: c->s.gravity[0] = v; break;
-        case STRAND_REG_GDT2_Y: c->s.gravity[1] = v; break;
         case STRAND_REG_DIST: /* the chain's rest length: every link (a graph's edges have their own) */
             c->s.dist = v;
             if (!hp->graph)
@@ -1068,7 +1065,6 @@ static void strand_regfile_edge(cyc_model *c, const cyc_inputs *in, int phase_be
         case STRAND_REG_START_Z: c->start[2] = v; break;
         case STRAND_REG_STEP_Z: c->step[2] = v; break;
         case STRAND_REG_PREV_Z: c->prev_off[2] = v; break;
-        case STRAND_REG_GDT2_Z: c->s.gravity[2] = v; break;
         case STRAND_REG_BOX_Z: c->s.box[2] = v; break;
         case STRAND_REG_LOAD_X: c->load[0][0] = v; break;
         case STRAND_REG_LOAD_Y: c->load[0][1] = v; break;

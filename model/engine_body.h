@@ -69,7 +69,6 @@ bool P(init)(SIM *s, const scene *sc, const fx_format *fmt)
     s->dist = FROM(sc->chain_rest);
     scene_constants(sc, &c);
     for (int k = 0; k < 3; k++) {
-        s->gravity[k] = FROM(c.gravity[k]);
         s->box[k] = FROM(sc->mouse_box[k]);
     }
     s->impulse = FROM(c.impulse);

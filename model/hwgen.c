@@ -78,7 +78,6 @@ void hw_params_of(const scene *sc, hw_params *hp)
     hp->mantissa = sc->fmt.mantissa;
     hp->iter = sc->iterations;
     hp->substeps = sc->substeps;
-    hp->en_gravity = sc->en_gravity;
     hp->en_mouse = sc->en_mouse;
     hp->grab = sc->en_mouse && sc->mouse == MOUSE_GRAB;
     hp->en_constraints = sc->en_constraints && (!hp->graph || hp->e_rods > 0);
@@ -121,8 +120,6 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
         if (n < max) out[n] = (hw_write){(a), hw_word(f, (v))};                                                         \
         n++;                                                                                                            \
     } while (0)
-    PUT(STRAND_REG_GDT2_X, s->gravity[0]);
-    PUT(STRAND_REG_GDT2_Y, s->gravity[1]);
     PUT(STRAND_REG_DIST, s->dist);
     PUT(STRAND_REG_IMPULSE, s->impulse);
     PUT(STRAND_REG_BOX_X, s->box[0]);
@@ -131,11 +128,8 @@ int hw_setup_writes(const scene *sc, const sim_fx *s, hw_write *out, int max)
     PUT(STRAND_REG_KD, s->kd);
     PUT(STRAND_REG_GROUND, s->ground);
     PUT(STRAND_REG_FRICTION, s->friction);
-    if (hp.dim == 3) {
-        PUT(STRAND_REG_GDT2_Z, s->gravity[2]);
-        PUT(STRAND_REG_BOX_Z, s->box[2]);
-    }
-    STRAND_EFFECT_PUTS /* the effects table's registers, for the effects the build has */
+    if (hp.dim == 3) PUT(STRAND_REG_BOX_Z, s->box[2]);
+    STRAND_EFFECT_PUTS /* the effects table's registers (0 for an effect the scene does not have) */
     for (int i = 0; i < sc->n_nodes; i++)
         if (sc->pinned[i]) PUT(STRAND_REG_PIN, (fx_t)hw_node_addr(&hp, i));
     if (hp.graph) {

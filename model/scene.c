@@ -15,10 +15,10 @@
 #include <ctype.h>
 #include <string.h>
 
-enum { S_SCENE, S_FORMAT, S_TIME, S_CHAIN, S_GRAPH, S_GRAVITY, S_MOUSE, S_CONSTRAINTS, S_SPRINGS, S_GROUND, STRAND_EFFECT_SECTION_ENUM S_COUNT };
+enum { S_SCENE, S_FORMAT, S_TIME, S_CHAIN, S_GRAPH, S_MOUSE, S_CONSTRAINTS, S_SPRINGS, S_GROUND, STRAND_EFFECT_SECTION_ENUM S_COUNT };
 _Static_assert(S_COUNT == sizeof(((scene *)0)->section_lines) / sizeof(int), "one line slot per section");
 static const char *const section_names[S_COUNT] = {
-    "scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground", STRAND_EFFECT_SECTION_NAMES
+    "scene", "format", "time", "chain", "graph", "mouse", "constraints", "springs", "ground", STRAND_EFFECT_SECTION_NAMES
 };
 
 /* A vector value as written: 2 or 3 components, checked against dim after parsing. */
@@ -44,7 +44,7 @@ typedef struct {
     char err[SCENE_ERR_LEN];
     int section_line[S_COUNT];
     /* values whose checks need the whole file */
-    vec_value chain_start, chain_step, chain_end, gravity, box, velocity, prev_offset, origin;
+    vec_value chain_start, chain_step, chain_end, box, velocity, prev_offset, origin;
     STRAND_EFFECT_PARSER_FIELDS
     int n_node_lines, cap_nodes;
     vec_value *node_values;
@@ -404,9 +404,6 @@ static int handler(void *user, const char *section, const char *key, const char 
             if (!strcmp(key, "origin")) return parse_vec(p, key, value, &p->origin);
         }
         break;
-    case S_GRAVITY:
-        if (!strcmp(key, "accel")) return parse_vec(p, key, value, &p->gravity);
-        break;
     case S_MOUSE:
         if (!strcmp(key, "mode")) {
             static const char *const c[] = {"impulse", "grab", 0};
@@ -691,17 +688,11 @@ static bool finish(parser *p)
     }
 
     /* effects are on when named */
-    sc->en_gravity = p->section_line[S_GRAVITY] != 0;
     sc->en_mouse = p->section_line[S_MOUSE] != 0;
     sc->en_constraints = p->section_line[S_CONSTRAINTS] != 0;
     sc->en_springs = p->section_line[S_SPRINGS] != 0;
     sc->en_ground = p->section_line[S_GROUND] != 0;
 
-    if (sc->en_gravity) {
-        if (!p->gravity.n) return fail_at(p, blame(p, S_GRAVITY, NULL), "[gravity] needs 'accel'");
-        if (!check_vec(p, &p->gravity, "accel")) return false;
-        memcpy(sc->gravity, p->gravity.v, sizeof sc->gravity);
-    }
     if (sc->en_springs && !key_line(p, S_SPRINGS, "ks")) return fail_at(p, blame(p, S_SPRINGS, NULL), "[springs] needs 'ks'");
     if (sc->en_ground) {
         if (!key_line(p, S_GROUND, "normal")) return fail_at(p, blame(p, S_GROUND, NULL), "[ground] needs 'normal'");
@@ -849,9 +840,9 @@ void scene_free(scene *sc)
 
 const char *scene_effects_string(const scene *sc, char *buf, size_t len)
 {
-    snprintf(buf, len, "%s%s%s%s%s" STRAND_EFFECT_NAMES_FMT, sc->en_gravity ? "gravity " : "", sc->en_mouse ? (sc->mouse == MOUSE_GRAB ? "mouse-grab " : "mouse-impulse ") : "",
+    snprintf(buf, len, STRAND_EFFECT_NAMES_FMT "%s%s%s%s", STRAND_EFFECT_NAMES_ARGS(sc), sc->en_mouse ? (sc->mouse == MOUSE_GRAB ? "mouse-grab " : "mouse-impulse ") : "",
              sc->en_constraints ? (sc->rule == RULE_CENTRED ? "centred " : "pairwise ") : "", sc->en_springs ? "springs " : "",
-             sc->en_ground ? "ground " : "", STRAND_EFFECT_NAMES_ARGS(sc));
+             sc->en_ground ? "ground " : "");
     size_t n = strlen(buf);
     if (n) buf[n - 1] = 0;
     else snprintf(buf, len, "none");
@@ -904,7 +895,6 @@ void scene_constants(const scene *sc, scene_consts *c)
 {
     double h = scene_h(sc), m = sc->mass;
     bool verlet = sc->integrator == INTEGRATOR_VERLET;
-    for (int k = 0; k < 3; k++) c->gravity[k] = sc->en_gravity ? (verlet ? sc->gravity[k] * h * h : sc->gravity[k]) : 0;
     /* Springs: Verlet adds F h^2 / m to the position; velocity is x - x- (per substep). */
     if (verlet) {
         c->ks = sc->ks * h * h / m;

@@ -90,9 +90,8 @@ typedef struct {
     double chain_start[3], chain_step[3], chain_rest;
 
     /* effects: each off unless the scene names its section */
-    bool en_gravity, en_mouse, en_constraints, en_springs, en_ground;
+    bool en_mouse, en_constraints, en_springs, en_ground;
     STRAND_EFFECT_SCENE_FIELDS /* the effects table's (scripts/gen_effects.py) */
-    double gravity[3];
     mouse_mode mouse;
     double mouse_box[3];
     double mouse_impulse;
@@ -108,7 +107,7 @@ typedef struct {
     int ground_sign;  /* +1: nodes stay at coordinate >= level + radius; -1: <= level - radius */
     double ground_level, ground_radius, ground_friction;
 
-    int section_lines[10 + STRAND_EFFECT_SECTION_COUNT]; /* line of each section header, 0 if absent (scene_section_line) */
+    int section_lines[9 + STRAND_EFFECT_SECTION_COUNT]; /* line of each section header (scene.c's nine and the table's), 0 if absent (scene_section_line) */
     struct {
         int section;
         char key[24];
@@ -121,7 +120,6 @@ typedef struct {
    the per-step scalings are written here once (engine init, hwgen through it, and
    strand check's rounding warnings). */
 typedef struct {
-    double gravity[3]; /* g h^2 (Verlet: added to a position) or g (Euler) */
     double ks, kd;     /* Verlet: ks h^2/m and kd h/m (kd h^2/m per-step damper); Euler: /m */
     double impulse;    /* mouse impulse */
     double friction;   /* 1 - ground friction */

@@ -27,7 +27,6 @@ extern "C" {
     NUM (*vel)[3];  /* Euler only */                                                                    \
     NUM *rest;      /* per edge */                                                                      \
     NUM dist;       /* the chain's rest length: the centred rule's 'dist' */                            \
-    NUM gravity[3]; /* Verlet: g h^2 (h = dt/substeps); Euler: g */                                     \
     NUM impulse;    /* mouse impulse 'a' */                                                             \
     NUM box[3];     /* mouse in-touch half-widths minX, minY, minZ */                                   \
     NUM ks, kd;     /* spring constants scaled to the integrator (see engine_body.h) */                 \

@@ -277,11 +277,6 @@ static int warn_constants(const scene *sc)
     int warnings = 0;
     char what[64];
     scene_constants(sc, &c);
-    if (sc->en_gravity)
-        for (int k = 0; k < sc->dim; k++) {
-            snprintf(what, sizeof what, "%s (%c)", verlet ? "g h^2" : "g", "xyz"[k]);
-            warnings += warn_constant(sc, scene_key_line(sc, "gravity", "accel"), what, c.gravity[k]);
-        }
     if (sc->en_springs) {
         warnings += warn_constant(sc, scene_key_line(sc, "springs", "ks"), verlet ? "ks h^2/m" : "ks/m", c.ks);
         warnings += warn_constant(sc, scene_key_line(sc, "springs", "kd"),

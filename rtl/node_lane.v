@@ -99,7 +99,6 @@ module node_lane #(
     input  wire [W-1:0]  w_prev,
 
     // the run-time constants and the pointer, of this axis
-    input  wire [W-1:0]  gdt2,       // g h^2
     input  wire [`STRAND_FX_SLOTS*W-1:0] fx_consts,  // the effects table's constants (strand_regs.vh's slots)
     input  wire [W-1:0]  impulse,    // a (lane 0)
     input  wire [W:0]    touch_lo,   // mouse - box, exact: in touch when touch_lo < n < touch_hi
@@ -296,7 +295,7 @@ module node_lane #(
             end
             fx_add #(.W(W), .SUB(0)) u_n1 (.sub(1'b0), .a(q_b), .b(v_w), .y(n1), .sat());
             if (EN_GRAVITY) begin : g_gravity
-                fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(gdt2), .y(n_g), .sat());
+                fx_add #(.W(W), .SUB(0)) u_g (.sub(1'b0), .a(n1), .b(fx_consts[(`STRAND_FX_GRAVITY + AXIS)*W +: W]), .y(n_g), .sat());
             end else begin : g_no_gravity
                 assign n_g = n1;
             end
@@ -357,9 +356,6 @@ module node_lane #(
     // reads its own axis of a vector, and only the constants of the effects the build has), ...
     wire unused_fx_consts = &{1'b0, fx_consts};
     generate
-        if (!EN_GRAVITY) begin : g_unused_gravity
-            wire unused_gravity = &{1'b0, gdt2};
-        end
         if (!(EN_MOUSE && !GRAB)) begin : g_unused_mouse
             wire unused_mouse = &{1'b0, impulse, touch_lo, touch_hi, in_touch};
         end else if (AXIS != 0) begin : g_unused_impulse

@@ -64,7 +64,6 @@ module node_unit #(
     output wire             verlet_done,  // this unit's FV: high from the end of a pass to the next start
 
     // the run-time constants and the pointer, DIM lanes each (lane k at bits k W +: W)
-    input  wire [DIM*W-1:0] gdt2,
     input  wire [DIM*(W+1)-1:0] touch_lo, // the in-touch box: mouse - box and mouse + box,
     input  wire [DIM*(W+1)-1:0] touch_hi, //   W+1 bits per lane, exact
     input  wire [DIM*W-1:0] mouse,
@@ -552,7 +551,7 @@ module node_unit #(
                 .grab_w(grab_w), .pin_w(pin_w),
                 .w_pin(w_pin),
                 .w_pos(w_pos[k*W +: W]), .w_prev(w_prev[k*W +: W]),
-                .gdt2(gdt2[k*W +: W]), .impulse(impulse), .fx_consts(fx_consts),
+                .impulse(impulse), .fx_consts(fx_consts),
                 .touch_lo(touch_lo_u[k*(W+1) +: W+1]), .touch_hi(touch_hi_u[k*(W+1) +: W+1]),
                 .mouse(mouse[k*W +: W]), .in_touch(in_touch), .ground(ground), .friction(friction),
                 .q(a_pos[k*W +: W]), .qp(a_prev[k*W +: W]), .qa(a_acc[k*W +: W]), .b_data(b_pos_raw[k*W +: W]),

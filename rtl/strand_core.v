@@ -77,7 +77,7 @@ module strand_core #(
     localparam [UW:0] M_COUNT = M[UW:0];
 
     // ---- registers ----
-    wire [DW-1:0]  gdt2, box, start_pos, step_pos, prev_off, load_pos, load_prev;
+    wire [DW-1:0]  box, start_pos, step_pos, prev_off, load_pos, load_prev;
     wire [W-1:0]   rest_len, impulse, ks, kd, ground, friction, edge_rest;
     wire [`STRAND_FX_SLOTS*W-1:0] fx_consts;  // the effects table's constants (strand_regs.vh)
     wire           cmd_init, pin_we, node_we_any, edge_we_any, irq_ack;
@@ -85,7 +85,7 @@ module strand_core #(
 `include "strand_params_pass.vh"
     ) u_regs (
         .clk(clk), .reset(reset), .cfg_we(cfg_we), .cfg_addr(cfg_addr), .cfg_data(cfg_data),
-        .gdt2(gdt2), .box(box), .start_pos(start_pos),
+        .box(box), .start_pos(start_pos),
         .step_pos(step_pos), .prev_off(prev_off), .load_pos(load_pos), .load_prev(load_prev),
         .rest_len(rest_len), .impulse(impulse), .ks(ks), .kd(kd), .ground(ground),
         .friction(friction), .edge_rest(edge_rest), .fx_consts(fx_consts),
@@ -374,7 +374,7 @@ module strand_core #(
                 , .UNIT_ID(u)) u_unit (
                 .clk(clk), .reset(reset),
                 .verlet_start(verlet_start), .ground_start(ground_start), .verlet_done(done_all[u]),
-                .gdt2(gdt2), .touch_lo(touch_lo), .touch_hi(touch_hi),
+                .touch_lo(touch_lo), .touch_hi(touch_hi),
                 .mouse(mouse_q), .mouse_down(mouse_down_q), .impulse(impulse), .fx_consts(fx_consts),
                 .ground(ground), .friction(friction),
                 .grab_here(grab_valid && grab_a[AW-1:IW] == U_ID), .grab_idx(grab_a[IW-1:0]),

@@ -15,7 +15,7 @@
  * PIN, NODE, EDGE, CMD and IRQ_ACK are strobes: they act in the cycle of the write
  * (strand_core decides which may act when).
  *
- * The effects table's constants (scripts/gen_effects.py: damping, wind, ...) come out on one bus,
+ * The effects table's constants (scripts/gen_effects.py: gravity, damping, wind, ...) come out on one bus,
  * fx_consts, whose slots strand_regs.vh names (`STRAND_FX_<CONST>): adding such an effect
  * changes no port here, in strand_core or in node_unit.
  *
@@ -32,7 +32,6 @@ module strand_regfile #(
     input  wire [`STRAND_REG_ADDR_BITS-1:0] cfg_addr,
     input  wire [W-1:0]     cfg_data,
 
-    output wire [DIM*W-1:0] gdt2,       // g h^2
     output wire [DIM*W-1:0] box,        // the mouse's in-touch half-widths
     output wire [DIM*W-1:0] start_pos,  // the init walk: node 0, the step, the previous-position offset
     output wire [DIM*W-1:0] step_pos,
@@ -103,7 +102,6 @@ module strand_regfile #(
     assign edge_rest = USE_LOAD    ? edge_rest_q : {W{1'b0}};
 
     // ---- the per-axis constants: one lane per axis, each register at its axis's address ----
-    localparam [3*AB-1:0] A_GDT2  = {`STRAND_REG_GDT2_Z,  `STRAND_REG_GDT2_Y,  `STRAND_REG_GDT2_X};
     localparam [3*AB-1:0] A_BOX   = {`STRAND_REG_BOX_Z,   `STRAND_REG_BOX_Y,   `STRAND_REG_BOX_X};
     localparam [3*AB-1:0] A_START = {`STRAND_REG_START_Z, `STRAND_REG_START_Y, `STRAND_REG_START_X};
     localparam [3*AB-1:0] A_STEP  = {`STRAND_REG_STEP_Z,  `STRAND_REG_STEP_Y,  `STRAND_REG_STEP_X};
@@ -113,10 +111,9 @@ module strand_regfile #(
     genvar k;
     generate
         for (k = 0; k < DIM; k = k + 1) begin : g_lane
-            reg [W-1:0] gdt2_q, box_q, start_q, step_q, prev_q, load_q, loadp_q;
+            reg [W-1:0] box_q, start_q, step_q, prev_q, load_q, loadp_q;
             always @(posedge clk) begin
                 if (reset) begin
-                    gdt2_q  <= {W{1'b0}};
                     box_q   <= {W{1'b0}};
                     start_q <= {W{1'b0}};
                     step_q  <= {W{1'b0}};
@@ -124,7 +121,6 @@ module strand_regfile #(
                     load_q  <= {W{1'b0}};
                     loadp_q <= {W{1'b0}};
                 end else if (cfg_we) begin
-                    if (cfg_addr == A_GDT2[k*AB +: AB])  gdt2_q  <= cfg_data;
                     if (cfg_addr == A_BOX[k*AB +: AB])   box_q   <= cfg_data;
                     if (cfg_addr == A_START[k*AB +: AB]) start_q <= cfg_data;
                     if (cfg_addr == A_STEP[k*AB +: AB])  step_q  <= cfg_data;
@@ -133,7 +129,6 @@ module strand_regfile #(
                     if (cfg_addr == A_LOADP[k*AB +: AB]) loadp_q <= cfg_data;
                 end
             end
-            assign gdt2[k*W +: W]      = EN_GRAVITY ? gdt2_q : {W{1'b0}};
             assign box[k*W +: W]       = USE_BOX ? box_q : {W{1'b0}};
             assign start_pos[k*W +: W] = USE_LAYOUT ? start_q : {W{1'b0}};
             assign step_pos[k*W +: W]  = USE_LAYOUT ? step_q : {W{1'b0}};

@@ -88,9 +88,6 @@ def graph_of(b):
 
 
 EFFECTS = [
-    dict(name="gravity", title="gravity",
-         scene=GRAVITY,
-         params={"EN_GRAVITY": 1}),
     dict(name="mouse", title="mouse impulse",
          scene={"mouse": ["box = 2 2", "impulse = 1", "event = 0 -2.5 8 1", "event = 2 -2.5 8 0",
                           "event = 3 0.5 8 1"]},
@@ -159,7 +156,7 @@ def doc_body():
 # The gating test's body: small, so that Yosys and Verilator take seconds.
 TEST_BUILD = {"W": 16, "F": 8, "M": 2, "K": 2, "SQRT_BITS": 6, "DIV_BITS": 6, "ITER": 2, "SUBSTEPS": 2}
 
-SECTION_ORDER = ["scene", "format", "time", "chain", "graph", "gravity", "mouse", "constraints", "springs", "ground"] + \
+SECTION_ORDER = ["scene", "format", "time", "chain", "graph", "mouse", "constraints", "springs", "ground"] + \
     [e["name"] for e in gen_effects.EFFECTS]
 
 

@@ -28,6 +28,7 @@ A row:
   section   (optional) the section its keys are in instead (damping: [time]); then
   on        says when it is on (a C expression of the scene, sc)
   after     (optional) the parameter its switch follows in the parameter table
+  default   (optional) its switch's default in strand_core (0 unless given)
   title     what the documents call it
   param     its enable parameter of strand_core (a switch, default 0)
   meaning   the parameter's description (docs/architecture.md's parameter table)
@@ -37,19 +38,46 @@ A row:
             per axis, _X _Y _Z) and a field of the engines' state: name, expr (a C expression of
             the scene's keys, `sc->NAME_KEY`, the substep `h` and, for a vector, the axis `k`),
             lo, hi (the range the constant must keep, else the scene is refused), symbol (how
-            warnings name it), key (the key a warning points at), what (the register map),
-            addr (optional: its fixed address, for a register older than the table)
+            warnings name it; symbol_c: a C expression for it instead), key (the key a warning
+            points at), what (the register map), addr (optional: its fixed address, a list of
+            three for a vector, for a register older than the table)
   verlet    the effect acts in the Verlet step only: explicit Euler refuses it
   cpu       model/cpu_rope.c (the CPU baseline) runs it; else it refuses such a scene
   cpu_fast  model/cpu_fast.c (the optimised CPU program) runs it; else it refuses such a scene
   doc       the scene lines of effects.py's row (context: lines the scene without it keeps too)
   fuzz      the random scenes: p (the share of builds with it), draws (key: (lo, hi) uniform,
-            a vector drawn per axis; the values are multiples of the format's LSB)
+            or (lo, hi, scale) with scale a Python expression of reach (a quarter of the format's
+            range), substeps and lsb; a vector drawn per axis; the values are multiples of the
+            format's LSB), off_class (optional: the coverage class of builds without it)
 """
 import os
 import sys
 
 EFFECTS = [
+    dict(
+        name="gravity",
+        title="gravity",
+        param="EN_GRAVITY",
+        default=1,
+        after="SUBSTEPS",
+        meaning="add g h^2 in the Verlet step",
+        keys=[
+            dict(key="accel", kind="vec", lo=-1e12, hi=1e12, required=True, field="gravity",
+                 what="the acceleration g"),
+        ],
+        consts=[
+            dict(name="gravity", reg="GDT2", vector=True, addr=[0, 1, 19],
+                 expr="(sc->integrator == INTEGRATOR_VERLET ? sc->gravity[k] * h * h : sc->gravity[k])", lo=None, hi=None,
+                 symbol="g h^2", symbol_c="(sc->integrator == INTEGRATOR_VERLET ? \"g h^2\" : \"g\")", key="accel",
+                 what="gravity times h^2 (explicit Euler, in the model only: g)"),
+        ],
+        verlet=False,
+        cpu=True,
+        cpu_fast=True,
+        doc=dict(scene=["accel = 0.5 -9.8"]),
+        # g h^2 up to a 50th of the body's reach a substep (dt = 1: h = 1 / substeps), any direction
+        fuzz=dict(p=0.8, draws={"accel": (-0.02, 0.02, "reach * substeps ** 2")}, off_class="no gravity"),
+    ),
     dict(
         name="damping",
         title="Verlet damping",
@@ -120,14 +148,14 @@ def own(e):
 
 
 def field(e, k):
-    """The scene's field of a key: NAME_KEY, or NAME when the key is the effect's name."""
-    return e["name"] if k["key"] == e["name"] else f"{e['name']}_{k['key']}"
+    """The scene's field of a key: its own name, or NAME_KEY, or NAME when the key is the effect's name."""
+    return k.get("field") or (e["name"] if k["key"] == e["name"] else f"{e['name']}_{k['key']}")
 
 
 def registers(taken):
     """The table's registers, (name, address, what): those with a fixed address at it, the others
     from the first address above every one in `taken` (the hand-written map's) and the fixed ones."""
-    fixed = [c["addr"] for e in EFFECTS for c in e["consts"] if "addr" in c]
+    fixed = [a for e in EFFECTS for c in e["consts"] if "addr" in c for a in (c["addr"] if c.get("vector") else [c["addr"]])]
     nxt = max(list(taken) + fixed) + 1
     out = []
     for e in EFFECTS:
@@ -136,7 +164,7 @@ def registers(taken):
             for i, n in enumerate(names):
                 what = c["what"] + (f", {AXES[i].lower()}" + (" (DIM = 3)" if i == 2 else "") + " (Q.F)" if c.get("vector") else "")
                 if "addr" in c:
-                    out.append((n, c["addr"] + i, what))
+                    out.append((n, c["addr"][i] if c.get("vector") else c["addr"], what))
                 else:
                     out.append((n, nxt, what))
                     nxt += 1
@@ -145,7 +173,7 @@ def registers(taken):
 
 def params():
     """The table's rows for gen_params.PARAMS, each with the parameter it follows (None: the default place)."""
-    return [((e["param"], "0", "0", "1", e["name"], e["meaning"]), e.get("after")) for e in EFFECTS]
+    return [((e["param"], str(e.get("default", 0)), "0", "1", e["name"], e["meaning"]), e.get("after")) for e in EFFECTS]
 
 
 def slots():
@@ -159,8 +187,8 @@ def slots():
 
 def effect_rows():
     """effects.py's rows (see its EFFECTS): the document and the gating check."""
-    return [dict(name=e["name"], title=e["title"], scene={sec(e): list(e["doc"]["scene"])},
-                 context=e["doc"].get("context"), params={e["param"]: 1}) for e in EFFECTS]
+    return [dict(name=e["name"], title=e["title"], scene={sec(e): list(e["doc"]["scene"])}, params={e["param"]: 1},
+                 **({"context": e["doc"]["context"]} if e["doc"].get("context") else {})) for e in EFFECTS]
 
 
 def fuzz_build(rng, build):
@@ -169,7 +197,7 @@ def fuzz_build(rng, build):
         build[e["param"]] = rng.random() < e["fuzz"]["p"]
 
 
-def fuzz_lines(rng, build, lsb):
+def fuzz_lines(rng, build, lsb, reach):
     """The scene lines of the build's table effects (a dict: section -> lines)."""
     out = {}
     for e in EFFECTS:
@@ -177,9 +205,10 @@ def fuzz_lines(rng, build, lsb):
             continue
         lines = []
         for key in e["keys"]:
-            lo, hi = e["fuzz"]["draws"][key["key"]]
+            lo, hi, *scale = e["fuzz"]["draws"][key["key"]]
+            s = eval(scale[0], {}, {"reach": reach, "substeps": build["SUBSTEPS"], "lsb": lsb}) if scale else 1
             n = build["DIM"] if key["kind"] == "vec" else 1
-            vals = [round(rng.uniform(lo, hi) / lsb) * lsb for _ in range(n)]
+            vals = [round(rng.uniform(lo, hi) * s / lsb) * lsb for _ in range(n)]
             lines.append(f"{key['key']} = " + " ".join(f"{v:.9g}" for v in vals))
         out.setdefault(sec(e), []).extend(lines)
     return out
@@ -187,7 +216,14 @@ def fuzz_lines(rng, build, lsb):
 
 def fuzz_classes(build):
     """The coverage classes a build's table effects give."""
-    return [e["name"] for e in EFFECTS if build.get(e["param"])]
+    return [e["name"] if build.get(e["param"]) else e["fuzz"]["off_class"] for e in EFFECTS
+            if build.get(e["param"]) or e["fuzz"].get("off_class")]
+
+
+def fuzz_class_rows():
+    """The table's rows of the fuzz's CLASSES: (class, what it is)."""
+    return [(e["name"], f"{e['param']} = 1") for e in EFFECTS] + \
+        [(e["fuzz"]["off_class"], f"{e['param']} = 0") for e in EFFECTS if e["fuzz"].get("off_class")]
 
 
 # ---- C ----
@@ -319,7 +355,7 @@ def c_header():
             line = f"scene_key_line(sc, \"{sec(e)}\", \"{c['key']}\")"
             if c.get("vector"):
                 warn.append(f"if (sc->en_{e['name']}) for (int k = 0; k < sc->dim; k++) {{")
-                warn.append(f"    snprintf(what, sizeof what, \"{c['symbol']} (%c)\", \"xyz\"[k]);")
+                warn.append(f"    snprintf(what, sizeof what, \"%s (%c)\", {c.get('symbol_c') or repr(c['symbol']).replace(chr(39), chr(34))}, \"xyz\"[k]);")
                 warn.append(f"    warnings += warn_constant(sc, {line}, what, c.{c['name']}[k]);")
                 warn.append("}")
             else:

@@ -56,7 +56,6 @@ PARAMS = [
     ("PIPE_STEPS",     "2",      "1", "4",    "constraints", "ARCH = 1: root and divide iterations a pipeline stage in the distance and spring pipes (fx_sqrt_pipe, fx_div_pipe): fewer stages, so a shorter latency and fewer registers, for a longer path a stage"),
     ("ITER",           "1",      "1", "1024", "time",        "constraint passes per substep"),
     ("SUBSTEPS",       "1",      "1", "1024", "time",        "substeps per frame"),
-    ("EN_GRAVITY",     "1",      "0", "1",    "gravity",     "add g h^2 in the Verlet step"),
     ("EN_MOUSE",       "1",      "0", "1",    "mouse",       "the mouse: the reference-000 impulse, or with GRAB the grab form"),
     ("GRAB",           "0",      "0", "1",    "mouse",       "with EN_MOUSE: the nearest node in the box follows the pointer"),
     ("EN_CONSTRAINTS", "1",      "0", "1",    "constraints", "distance constraints (rods, struts, chain links)"),

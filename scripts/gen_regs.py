@@ -15,8 +15,6 @@ import gen_effects  # noqa: E402  (the effects table: its registers follow the f
 ADDR_BITS = 6
 # (name, address, what is written there)
 REGS = [
-    ("GDT2_X", 0, "gravity times h^2, x (Q.F)"),
-    ("GDT2_Y", 1, "gravity times h^2, y (Q.F)"),
     ("DIST", 2, "rest length of a chain segment, the centred rule's dist (Q.F, > 0)"),
     ("IMPULSE", 3, "mouse impulse a (Q.F)"),
     ("BOX_X", 4, "mouse in-touch half-width minX (Q.F)"),
@@ -33,7 +31,6 @@ REGS = [
     ("FRICTION", 16, "ground friction factor 1 - u: the share of tangential motion kept at a contact (Q.F)"),
     ("PREV_X", 17, "initial previous position of each free node minus its position, x: -v h (Q.F)"),
     ("PREV_Y", 18, "initial previous position of each free node minus its position, y (Q.F)"),
-    ("GDT2_Z", 19, "gravity times h^2, z (DIM = 3; Q.F)"),
     ("BOX_Z", 20, "mouse in-touch half-width minZ (DIM = 3; Q.F)"),
     ("START_Z", 21, "initial position of node 0, z (DIM = 3; Q.F)"),
     ("STEP_Z", 22, "initial offset from one node to the next, z (DIM = 3; Q.F)"),

@@ -74,7 +74,7 @@ def random_build(rng, plan=None):
     w = rng.choice([12, 16, 18, 20, 24, 32])
     b = {"W": w, "M": rng.randint(1, 4), "K": rng.randint(1, 6),
          "ITER": rng.randint(1, 3), "SUBSTEPS": rng.randint(1, 2),
-         "EN_GRAVITY": rng.random() < 0.8, "EN_MOUSE": rng.random() < 0.7,
+         "EN_MOUSE": rng.random() < 0.7,
          "EN_CONSTRAINTS": rng.random() < 0.85, "RULE": rng.randint(0, 1),
          "EN_SPRINGS": rng.random() < 0.4, "EN_GROUND": rng.random() < 0.3, "GROUND_AXIS": rng.randint(0, 1),
          "GROUND_ABOVE": rng.random() < 0.5, "DIM": rng.choice([2, 2, 3]), "GRAPH": rng.random() < 0.3}
@@ -168,8 +168,7 @@ CLASSES = [
     ("graph rods only", "a graph without springs"),
     ("ground x", "GROUND_AXIS = 0"), ("ground y", "GROUND_AXIS = 1"), ("ground z", "GROUND_AXIS = 2"),
     ("ground above", "GROUND_ABOVE = 1"), ("ground below", "GROUND_ABOVE = 0"),
-    ("gravity", "EN_GRAVITY = 1"), ("no gravity", "EN_GRAVITY = 0"),
-    *[(e["name"], f"{e['param']} = 1") for e in gen_effects.EFFECTS],
+    *gen_effects.fuzz_class_rows(),
     ("impulse", "the mouse's impulse form"), ("grab", "the mouse's grab form"), ("no mouse", "EN_MOUSE = 0"),
     ("sqrt narrow", "SQRT_BITS < W - 1"), ("sqrt full", "SQRT_BITS = W - 1"),
     ("div narrow", "DIV_BITS < W - 1"), ("div full", "DIV_BITS = W - 1"),
@@ -320,9 +319,6 @@ def scene_text(build, seed, slot):
     if rng.random() < 0.3 or slot == 1:  # the whole body starts moving
         lines.append(f"velocity = {vec([rng.uniform(-1, 1) * reach / 20 for _ in range(3)])}")
         facts["velocity"] = True
-    if build["EN_GRAVITY"]:
-        g = rng.uniform(0, reach / 50) * build["SUBSTEPS"] ** 2
-        lines += ["[gravity]", f"accel = {vec([rng.uniform(-0.3, 0.3) * g, -g, rng.uniform(-0.3, 0.3) * g])}"]
     if build["EN_CONSTRAINTS"]:
         lines += ["[constraints]", f"rule = {['centred', 'pairwise'][build['RULE']]}", f"order = {facts['order']}"]
         if build.get("PROJECTION"):
@@ -357,7 +353,7 @@ def scene_text(build, seed, slot):
             frame += rng.randint(1, 3)
     # the effects table's keys, from a generator of their own: into their section (after its
     # header when the scene has it, else a section of their own at the end)
-    for section, keys in gen_effects.fuzz_lines(random.Random(f"effects-{seed}"), build, lsb).items():
+    for section, keys in gen_effects.fuzz_lines(random.Random(f"effects-{seed}"), build, lsb, reach).items():
         at = lines.index(f"[{section}]") + 1 if f"[{section}]" in lines else None
         if at is None:
             lines += [f"[{section}]"] + keys
@@ -408,7 +404,6 @@ def classes_of(p, facts, resets=0):
     if p["EN_GROUND"]:
         c.add("ground " + "xyz"[p["GROUND_AXIS"]])
         c.add("ground above" if p["GROUND_ABOVE"] else "ground below")
-    c.add("gravity" if p["EN_GRAVITY"] else "no gravity")
     c.add(("grab" if p["GRAB"] else "impulse") if p["EN_MOUSE"] else "no mouse")
     if (rods and not p["MANTISSA"]) or p["EN_SPRINGS"]:   # the root and the divider in use
         c.add("sqrt full" if p["SQRT_BITS"] == p["W"] - 1 else "sqrt narrow")
