@@ -1,7 +1,7 @@
 /*
  * sweep.c - one point of the accuracy study (docs/accuracy.md, scripts/accuracy.py).
  *
- *   sweep SCENE [--check none|period|catenary|spring|energy] [--frames N] [--reverse]
+ *   sweep SCENE [--check none|period|catenary|spring|energy|wind] [--frames N] [--reverse]
  *
  * Runs SCENE in fixed point (its [format]) and in double, frame by frame, and prints
  * one JSON object on stdout:
@@ -19,7 +19,12 @@
  *       spring    spring pair: damped angular frequency from the zero crossings of the
  *                 stretch, decay rate from the peaks, against sqrt(w0^2 - g^2) and kd/m;
  *       energy    pendulum: turning-point height above the lowest point (the energy at
- *                 zero speed), last swings against the first, % drift.
+ *                 zero speed), last swings against the first, % drift;
+ *       wind      a rope pinned at one end in a wind ([wind], no other force but gravity):
+ *                 at rest every node carries the same load g + c w (drag on the wind's
+ *                 speed), so the rope hangs straight along it; the angle of the line from
+ *                 the pin to the last node from g, at the last frame, against the angle of
+ *                 g + c w from g, % error.
  * --reverse: then run the scene back as long (current and previous positions swapped,
  * swapped again at the end) and report how far each run lands from its start: Verlet is
  * time-reversible, so a free body returns bit for bit; a constraint mode departs by what
@@ -263,6 +268,20 @@ static void check_json(const char *name, const char *check, const scene *sc, con
         json_num("swings", np, 0);
         json_num("seconds", n * dt, 0);
         json_num("error_pct", k > 0 && first > 0 ? 100 * (lastv - first) / first : NAN, 1);
+    } else if (!strcmp(check, "wind")) {
+        int pin = 0, end = sc->n_nodes - 1;
+        double load[3], rope[3], g2 = 0, l2 = 0, r2 = 0, gl = 0, gr = 0;
+        for (int k = 0; k < 3; k++) {
+            load[k] = sc->gravity[k] + sc->wind_drag * sc->wind_velocity[k];
+            rope[k] = tr->last[end][k] - tr->last[pin][k];
+            g2 += sc->gravity[k] * sc->gravity[k], l2 += load[k] * load[k], r2 += rope[k] * rope[k];
+            gl += sc->gravity[k] * load[k], gr += sc->gravity[k] * rope[k];
+        }
+        double ref = acos(fmin(1, gl / sqrt(g2 * l2))), got = acos(fmin(1, gr / sqrt(g2 * r2)));
+        json_num("angle_deg", got * 180 / SWEEP_PI, 0);
+        json_num("angle_reference_deg", ref * 180 / SWEEP_PI, 0);
+        json_num("final_speed", tr->last_speed, 0);
+        json_num("error_pct", 100 * (got - ref) / ref, 1);
     } else {
         printf("\"none\": true");
     }
@@ -325,13 +344,13 @@ int main(int argc, char **argv)
         else if (!strcmp(argv[i], "--reverse")) reverse = true;
         else if (argv[i][0] != '-' && !path) path = argv[i];
         else {
-            fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy] [--frames N] [--reverse]\n");
+            fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy|wind] [--frames N] [--reverse]\n");
             return 2;
         }
     }
     if (!path || (strcmp(check, "none") && strcmp(check, "period") && strcmp(check, "catenary") && strcmp(check, "spring") &&
-                  strcmp(check, "energy"))) {
-        fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy] [--frames N] [--reverse]\n");
+                  strcmp(check, "energy") && strcmp(check, "wind"))) {
+        fprintf(stderr, "usage: sweep SCENE [--check none|period|catenary|spring|energy|wind] [--frames N] [--reverse]\n");
         return 2;
     }
     if (!scene_load(&sc, path, err)) {
