@@ -24,7 +24,8 @@
  *                 at rest every node carries the same load g + c w (drag on the wind's
  *                 speed), so the rope hangs straight along it; the angle of the line from
  *                 the pin to the last node from g, at the last frame, against the angle of
- *                 g + c w from g, % error.
+ *                 g + c w from g; the error: the line's angle from g + c w, as a % of the
+ *                 latter's from g (a rope blown the wrong way is off by 200 %).
  * --reverse: then run the scene back as long (current and previous positions swapped,
  * swapped again at the end) and report how far each run lands from its start: Verlet is
  * time-reversible, so a free body returns bit for bit; a constraint mode departs by what
@@ -270,18 +271,22 @@ static void check_json(const char *name, const char *check, const scene *sc, con
         json_num("error_pct", k > 0 && first > 0 ? 100 * (lastv - first) / first : NAN, 1);
     } else if (!strcmp(check, "wind")) {
         int pin = 0, end = sc->n_nodes - 1;
-        double load[3], rope[3], g2 = 0, l2 = 0, r2 = 0, gl = 0, gr = 0;
+        double load[3], rope[3], g2 = 0, l2 = 0, r2 = 0, gl = 0, gr = 0, lr = 0;
         for (int k = 0; k < 3; k++) {
             load[k] = sc->gravity[k] + sc->wind_drag * sc->wind_velocity[k];
             rope[k] = tr->last[end][k] - tr->last[pin][k];
             g2 += sc->gravity[k] * sc->gravity[k], l2 += load[k] * load[k], r2 += rope[k] * rope[k];
-            gl += sc->gravity[k] * load[k], gr += sc->gravity[k] * rope[k];
+            gl += sc->gravity[k] * load[k], gr += sc->gravity[k] * rope[k], lr += load[k] * rope[k];
         }
+        /* the rope's angle from g, the load's, and the rope's from the load (the error: a rope blown
+           the wrong way hangs at the load's angle from g, but twice it from the load) */
         double ref = acos(fmin(1, gl / sqrt(g2 * l2))), got = acos(fmin(1, gr / sqrt(g2 * r2)));
+        double off = acos(fmin(1, lr / sqrt(l2 * r2)));
         json_num("angle_deg", got * 180 / SWEEP_PI, 0);
         json_num("angle_reference_deg", ref * 180 / SWEEP_PI, 0);
+        json_num("off_load_deg", off * 180 / SWEEP_PI, 0);
         json_num("final_speed", tr->last_speed, 0);
-        json_num("error_pct", 100 * (got - ref) / ref, 1);
+        json_num("error_pct", 100 * off / ref, 1);
     } else {
         printf("\"none\": true");
     }
