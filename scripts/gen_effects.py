@@ -45,7 +45,7 @@ A row:
   cpu       model/cpu_rope.c (the CPU baseline) runs it; else it refuses such a scene
   cpu_fast  model/cpu_fast.c (the optimised CPU program) runs it; else it refuses such a scene
   doc       the scene lines of effects.py's row (context: lines the scene without it keeps too)
-  fuzz      the random scenes: p (the share of builds with it), draws (key: (lo, hi) uniform,
+  fuzz      the random scenes: hand (lockstep_fuzz.py draws it itself), or p (the share of builds with it), draws (key: (lo, hi) uniform,
             or (lo, hi, scale) with scale a Python expression of reach (a quarter of the format's
             range), substeps and lsb; a vector drawn per axis; the values are multiples of the
             format's LSB), off_class (optional: the coverage class of builds without it)
@@ -75,8 +75,9 @@ EFFECTS = [
         cpu=True,
         cpu_fast=True,
         doc=dict(scene=["accel = 0.5 -9.8"]),
-        # g h^2 up to a 50th of the body's reach a substep (dt = 1: h = 1 / substeps), any direction
-        fuzz=dict(p=0.8, draws={"accel": (-0.02, 0.02, "reach * substeps ** 2")}, off_class="no gravity"),
+        # drawn by scripts/lockstep_fuzz.py itself, in its build's and scene's own stream (mostly
+        # downward, scaled to the body), as before the table: the table gives its classes only
+        fuzz=dict(hand=True, off_class="no gravity"),
     ),
     dict(
         name="damping",
@@ -191,16 +192,21 @@ def effect_rows():
                  **({"context": e["doc"]["context"]} if e["doc"].get("context") else {})) for e in EFFECTS]
 
 
+def drawn():
+    """The effects whose random draws the table makes (not those lockstep_fuzz.py draws itself)."""
+    return [e for e in EFFECTS if not e["fuzz"].get("hand")]
+
+
 def fuzz_build(rng, build):
     """Draw each effect's switch into build (rng: the fuzz's per-build generator for the table)."""
-    for e in EFFECTS:
+    for e in drawn():
         build[e["param"]] = rng.random() < e["fuzz"]["p"]
 
 
 def fuzz_lines(rng, build, lsb, reach):
     """The scene lines of the build's table effects (a dict: section -> lines)."""
     out = {}
-    for e in EFFECTS:
+    for e in drawn():
         if not build.get(e["param"]):
             continue
         lines = []

@@ -74,7 +74,7 @@ def random_build(rng, plan=None):
     w = rng.choice([12, 16, 18, 20, 24, 32])
     b = {"W": w, "M": rng.randint(1, 4), "K": rng.randint(1, 6),
          "ITER": rng.randint(1, 3), "SUBSTEPS": rng.randint(1, 2),
-         "EN_MOUSE": rng.random() < 0.7,
+         "EN_GRAVITY": rng.random() < 0.8, "EN_MOUSE": rng.random() < 0.7,
          "EN_CONSTRAINTS": rng.random() < 0.85, "RULE": rng.randint(0, 1),
          "EN_SPRINGS": rng.random() < 0.4, "EN_GROUND": rng.random() < 0.3, "GROUND_AXIS": rng.randint(0, 1),
          "GROUND_ABOVE": rng.random() < 0.5, "DIM": rng.choice([2, 2, 3]), "GRAPH": rng.random() < 0.3}
@@ -110,7 +110,7 @@ def random_build(rng, plan=None):
     # (modulo its length), so that every run covers it, and a row's own value wins
     gen_effects.fuzz_build(random.Random("effects " + repr(sorted(b.items()))), b)
     if plan in PLAN:
-        for j, e in enumerate(gen_effects.EFFECTS):
+        for j, e in enumerate(gen_effects.drawn()):
             b[e["param"]] = bool(plan.get(e["param"], b[e["param"]] or j % len(PLAN) == PLAN.index(plan)))
     return b
 
@@ -319,6 +319,9 @@ def scene_text(build, seed, slot):
     if rng.random() < 0.3 or slot == 1:  # the whole body starts moving
         lines.append(f"velocity = {vec([rng.uniform(-1, 1) * reach / 20 for _ in range(3)])}")
         facts["velocity"] = True
+    if build["EN_GRAVITY"]:  # the effects table's gravity, drawn here (its row says so): mostly downward
+        g = rng.uniform(0, reach / 50) * build["SUBSTEPS"] ** 2
+        lines += ["[gravity]", f"accel = {vec([rng.uniform(-0.3, 0.3) * g, -g, rng.uniform(-0.3, 0.3) * g])}"]
     if build["EN_CONSTRAINTS"]:
         lines += ["[constraints]", f"rule = {['centred', 'pairwise'][build['RULE']]}", f"order = {facts['order']}"]
         if build.get("PROJECTION"):
