@@ -219,6 +219,10 @@ test-lockstep: $(STRAND) $(GEN_HDRS)
 	    --late-pins-scene tb/scenes/chain_pinned_moving.scene:16
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(PREV_SCENES),--scene $(s)) --redblack
 	@python3 scripts/lockstep_fuzz.py 0 $(foreach s,$(MANT_SCENES),--scene $(s)) --redblack
+	@# a PIN in the init walk's last cycle, the frame the cycle after (tb/pin_after_walk.scene: the
+	@# stimulus that found it; the pass reads a node's pinned flag with its address)
+	@h=$$(python3 scripts/lockstep_fuzz.py --harness-for tb/pin_after_walk.scene) && \
+	  $$h tb/pin_after_walk.scene --quiet --seed 100033 --resets 2 --late-pins +verilator+rand+reset+2 +verilator+seed+100034
 
 # ---- the synthesised netlist in lockstep (scripts/gatesim.py) ----
 # make gatesim: one build of each kind (serial and pipelined, centred and pairwise, 2D and 3D,

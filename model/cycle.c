@@ -764,8 +764,12 @@ static void node_unit_writes(cyc_model *c, const cyc_inputs *in, bool *written)
                 const int idx = c->idx_d * ways + way;
                 if (idx >= k) continue;
                 const int node = u * k + idx;
+                /* the node's pinned flag as node_unit read it (a PIN since then is not seen) */
+                const bool pinned_now = c->sc.pinned[node];
+                c->sc.pinned[node] = c->pin_d[u * ways + way];
                 if (c->ground_d) {
                     if (sim_fx_ground_node(&c->s, node)) lane_write_port(c, written, u, way, idx, node);
+                    c->sc.pinned[node] = pinned_now;
                     continue;
                 }
                 for (int a = 0; a < 3; a++) c->s.mouse[a] = c->mouse_q[a];
@@ -774,6 +778,7 @@ static void node_unit_writes(cyc_model *c, const cyc_inputs *in, bool *written)
                     if (hp->en_mouse && !hp->grab) sim_fx_mouse_node(&c->s, node);
                     lane_write_port(c, written, u, way, idx, node);
                 }
+                c->sc.pinned[node] = pinned_now;
                 /* the force is consumed (pinned nodes' too): the next spring pass starts from 0 */
                 for (int a = 0; a < 3; a++) c->s.acc[node][a] = 0;
             }
@@ -959,6 +964,20 @@ static void node_unit_pass(cyc_model *c, const cyc_ctrl *x)
     if (pass_d_next) {
         c->idx_d = idx_d_next;
         c->ground_d = ground_d_next;
+    }
+    /* the pinned flags travel with their nodes: each stage takes the one before it (as the
+       indices above), and the node (row) whose data arrive next is read now, from the flags as
+       they are in this cycle (a PIN of this cycle reaches them two edges on) */
+    const int ways = hp->pair ? 2 : 1, lanes = hp->m * ways;
+    for (int l = 0; l < lanes; l++) {
+        if (pass_d_next) c->pin_d[l] = c->pin_c[l];
+        if (pass_c_next) c->pin_c[l] = c->pin_b[l];
+        if (pass_b_next) c->pin_b[l] = hp->arch ? c->pin_a[l] : c->pin_v[l];
+        if (c->pass_a) c->pin_a[l] = c->pin_v[l];
+        if (c->running) {
+            const int idx = c->vidx * ways + l % ways;
+            c->pin_v[l] = idx < hp->k && c->sc.pinned[(l / ways) * hp->k + idx];
+        }
     }
 }
 

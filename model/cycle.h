@@ -101,6 +101,10 @@ typedef struct {
     int idx_c;
     bool pass_d, ground_d; /* stage D: it is written */
     int idx_d;
+    /* each way's pinned flag, as node_unit reads it with the node's address (q_pin, pin_e_q,
+       pin_o_q) and carries it down the stages: a PIN written after the read does not reach a pass
+       already under way (stage R/A: pin_v; then pin_a with ARCH, pin_b, pin_c, pin_d) */
+    bool pin_v[CYC_MAX_LANES], pin_a[CYC_MAX_LANES], pin_b[CYC_MAX_LANES], pin_c[CYC_MAX_LANES], pin_d[CYC_MAX_LANES];
     fx_t b_x[CYC_MAX_UNITS], b_y[CYC_MAX_UNITS], b_z[CYC_MAX_UNITS]; /* port B: the word read (b_ok applied) */
     fx_t bq_x[CYC_MAX_UNITS], bq_y[CYC_MAX_UNITS], bq_z[CYC_MAX_UNITS]; /* node_unit b_pos_q: that word a cycle later */
     bool wb_valid[CYC_MAX_LANES];   /* the write-back lanes (WB of them) */
